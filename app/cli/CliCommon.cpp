@@ -1,0 +1,87 @@
+#include "app/cli/CliCommon.h"
+
+#include <QDir>
+#include <QJsonDocument>
+#include <cstdio>
+
+#include "core/bundle/BundleReader.h"
+#include "db/CampaignStore.h"
+
+namespace driftlab::cli {
+
+void parseArguments(QCommandLineParser& parser, const QStringList& args,
+                    const QList<QCommandLineOption>& options, const QString& positional) {
+    parser.addHelpOption();
+    parser.addOption({QStringLiteral("json"), QStringLiteral("Print the result as JSON on stdout.")});
+    parser.addOptions(options);
+    if (!positional.isEmpty()) parser.addPositionalArgument(positional, positional);
+    if (!parser.parse(args)) throw CliError(parser.errorText(), 2);
+    if (parser.isSet(QStringLiteral("help"))) {
+        std::fputs(qPrintable(parser.helpText()), stdout);
+        throw CliError(QString(), 0);
+    }
+}
+
+QList<QCommandLineOption> campaignSourceOptions() {
+    return {{QStringLiteral("db"), QStringLiteral("Campaign database (SQLite file)."), QStringLiteral("FILE")},
+            {QStringLiteral("campaign"), QStringLiteral("Campaign id in the database."), QStringLiteral("ID")}};
+}
+
+Campaign loadCampaignSource(const QCommandLineParser& parser) {
+    const QStringList positional = parser.positionalArguments();
+    if (parser.isSet(QStringLiteral("db"))) {
+        bool ok = false;
+        const qint64 id = parser.value(QStringLiteral("campaign")).toLongLong(&ok);
+        if (!ok) throw CliError(QStringLiteral("--db needs --campaign ID (a number)"), 2);
+        QString error;
+        auto store = db::CampaignStore::open(parser.value(QStringLiteral("db")), &error);
+        if (!store) throw CliError(error);
+        auto campaign = store->loadCampaign(id, &error);
+        if (!campaign) throw CliError(error);
+        return *campaign;
+    }
+    if (positional.size() != 1) throw CliError(QStringLiteral("give a BUNDLE folder or --db FILE --campaign ID"), 2);
+    return readBundleOrFail(positional.front());
+}
+
+Campaign readBundleOrFail(const QString& path) {
+    BundleReadOptions options;
+    options.progress = [](double f) { return printProgress(QStringLiteral("reading bundle"), f); };
+    BundleReadResult result = readBundle(path, options);
+    for (const QString& warning : result.warnings) std::fprintf(stderr, "warning: %s\n", qPrintable(warning));
+    if (!result.ok()) {
+        // Name the file by its full path so the user can open it at that line.
+        BundleError e = *result.error;
+        if (e.file != path) e.file = QDir(path).filePath(e.file);
+        throw CliError(e.toString());
+    }
+    return *result.campaign;
+}
+
+namespace {
+bool g_progressLineOpen = false;
+}
+
+bool printProgress(const QString& label, double fraction) {
+    std::fprintf(stderr, "\r%s: %3d%%", qPrintable(label), int(fraction * 100 + 0.5));
+    g_progressLineOpen = fraction < 1.0;
+    if (!g_progressLineOpen) std::fputc('\n', stderr);
+    return true;
+}
+
+void endProgressLine() {
+    if (g_progressLineOpen) std::fputc('\n', stderr);
+    g_progressLineOpen = false;
+}
+
+void printJson(const QJsonObject& object) {
+    std::fputs(QJsonDocument(object).toJson(QJsonDocument::Compact).constData(), stdout);
+    std::fputc('\n', stdout);
+}
+
+void printLine(const QString& text) {
+    std::fputs(text.toUtf8().constData(), stdout);
+    std::fputc('\n', stdout);
+}
+
+}  // namespace driftlab::cli

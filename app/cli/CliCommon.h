@@ -1,0 +1,42 @@
+#pragma once
+// What every driftlab-cli command shares: argument parsing, where a campaign
+// comes from (a bundle folder or --db FILE --campaign ID), JSON on stdout,
+// progress on stderr and a one-line reason on failure.
+
+#include <QCommandLineParser>
+#include <QJsonObject>
+#include <QStringList>
+#include <stdexcept>
+
+#include "core/domain/Campaign.h"
+
+namespace driftlab::cli {
+
+/// Thrown by commands; main() prints "driftlab-cli: <what>" and exits non-zero.
+struct CliError : std::runtime_error {
+    explicit CliError(const QString& why, int exitCode = 1)
+        : std::runtime_error(why.toStdString()), exitCode(exitCode) {}
+    int exitCode;
+};
+
+/// A parser with --help, --json and the given options; parses `args` (the
+/// command name first) and throws CliError(…, 2) on a usage error.
+void parseArguments(QCommandLineParser& parser, const QStringList& args,
+                    const QList<QCommandLineOption>& options, const QString& positional = {});
+
+/// --db FILE and --campaign ID, for commands that take a BUNDLE.
+QList<QCommandLineOption> campaignSourceOptions();
+/// The campaign named by the positional BUNDLE or by --db/--campaign.
+Campaign loadCampaignSource(const QCommandLineParser& parser);
+/// Reads and validates a bundle folder; throws CliError with file:line:column: why.
+Campaign readBundleOrFail(const QString& path);
+
+/// Progress "label: 42%" on stderr, rewritten in place; returns true (never cancels).
+bool printProgress(const QString& label, double fraction);
+/// Ends an unfinished progress line so that what follows starts on its own line.
+void endProgressLine();
+
+void printJson(const QJsonObject& object);
+void printLine(const QString& text);
+
+}  // namespace driftlab::cli

@@ -1,0 +1,301 @@
+#include "core/bundle/CampaignJson.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QSet>
+
+#include "core/bundle/BundleError.h"
+
+namespace driftlab {
+namespace {
+
+/// Reads the keys of one JSON object, remembering which were used so the rest
+/// can be kept as `extra`. Errors name the key path, e.g. channels[2].role.
+class ObjectReader {
+public:
+    ObjectReader(QJsonObject object, QString path, QString file)
+        : m_object(std::move(object)), m_path(std::move(path)), m_file(std::move(file)) {}
+
+    [[noreturn]] void fail(const QString& key, const QString& message) const {
+        throw BundleException({m_file, 0, 0, keyPath(key) + QStringLiteral(": ") + message});
+    }
+    QString keyPath(const QString& key) const {
+        return m_path.isEmpty() ? key : m_path + QLatin1Char('.') + key;
+    }
+    bool has(const QString& key) const { return m_object.contains(key); }
+
+    QJsonValue take(const QString& key) {
+        m_used.insert(key);
+        return m_object.value(key);
+    }
+    QString string(const QString& key, bool required) {
+        QJsonValue v = take(key);
+        if (v.isUndefined() && !required) return {};
+        if (!v.isString()) fail(key, v.isUndefined() ? QStringLiteral("missing") : QStringLiteral("expected a string"));
+        return v.toString();
+    }
+    std::optional<double> optionalNumber(const QString& key) {
+        QJsonValue v = take(key);
+        if (v.isUndefined()) return std::nullopt;
+        if (!v.isDouble()) fail(key, QStringLiteral("expected a number"));
+        return v.toDouble();
+    }
+    double number(const QString& key) {
+        auto v = optionalNumber(key);
+        if (!v) fail(key, QStringLiteral("missing"));
+        return *v;
+    }
+    double positive(const QString& key) {
+        double v = number(key);
+        if (!(v > 0)) fail(key, QStringLiteral("must be positive, got %1").arg(v));
+        return v;
+    }
+    double positiveOr(const QString& key, double fallback) {
+        if (!has(key)) return fallback;
+        return positive(key);
+    }
+    std::optional<RangeMm> optionalRange(const QString& key) {
+        QJsonValue v = take(key);
+        if (v.isUndefined()) return std::nullopt;
+        QJsonArray a = v.toArray();
+        if (!v.isArray() || a.size() != 2 || !a[0].isDouble() || !a[1].isDouble())
+            fail(key, QStringLiteral("expected [from_mm, to_mm]"));
+        if (!(a[0].toDouble() <= a[1].toDouble()))
+            fail(key, QStringLiteral("range start must not exceed its end"));
+        return RangeMm{a[0].toDouble(), a[1].toDouble()};
+    }
+    ObjectReader object(const QString& key) {
+        QJsonValue v = take(key);
+        if (!v.isObject()) fail(key, v.isUndefined() ? QStringLiteral("missing") : QStringLiteral("expected an object"));
+        return ObjectReader(v.toObject(), keyPath(key), m_file);
+    }
+    QJsonArray array(const QString& key) {
+        QJsonValue v = take(key);
+        if (!v.isArray()) fail(key, v.isUndefined() ? QStringLiteral("missing") : QStringLiteral("expected an array"));
+        return v.toArray();
+    }
+    QJsonObject rest() const {
+        QJsonObject extra;
+        for (auto it = m_object.begin(); it != m_object.end(); ++it)
+            if (!m_used.contains(it.key())) extra.insert(it.key(), it.value());
+        return extra;
+    }
+
+private:
+    QJsonObject m_object;
+    QString m_path;
+    QString m_file;
+    QSet<QString> m_used;
+};
+
+ObjectReader elementReader(const QJsonArray& array, int i, const QString& name, const QString& file) {
+    QString path = QStringLiteral("%1[%2]").arg(name).arg(i);
+    if (!array[i].isObject())
+        throw BundleException({file, 0, 0, path + QStringLiteral(": expected an object")});
+    return ObjectReader(array[i].toObject(), path, file);
+}
+
+Screw readScrew(ObjectReader r) {
+    Screw s;
+    s.length_mm = r.positive(QStringLiteral("length_mm"));
+    s.diameter_mm = r.positive(QStringLiteral("diameter_mm"));
+    s.lead_mm = r.positive(QStringLiteral("lead_mm"));
+    s.fixed_end_mm = r.number(QStringLiteral("fixed_end_mm"));
+    s.mounting = r.string(QStringLiteral("mounting"), false);
+    if (s.mounting.isEmpty()) s.mounting = QStringLiteral("fixed-free");
+    static const QStringList mountings{QStringLiteral("fixed-free"), QStringLiteral("fixed-supported"),
+                                       QStringLiteral("fixed-fixed")};
+    if (!mountings.contains(s.mounting))
+        r.fail(QStringLiteral("mounting"), QStringLiteral("unknown mounting '%1' (expected %2)")
+                                               .arg(s.mounting, mountings.join(QStringLiteral(", "))));
+    s.alpha_per_K = r.positiveOr(QStringLiteral("alpha_per_K"), s.alpha_per_K);
+    if (s.alpha_per_K > 1e-3)
+        r.fail(QStringLiteral("alpha_per_K"),
+               QStringLiteral("%1 per K is not a metal's expansion coefficient; give it per kelvin "
+                              "(steel: 11.5e-6), not in ppm or µm/m")
+                   .arg(s.alpha_per_K));
+    s.density_kg_m3 = r.positiveOr(QStringLiteral("density_kg_m3"), s.density_kg_m3);
+    s.specific_heat_J_kgK = r.positiveOr(QStringLiteral("specific_heat_J_kgK"), s.specific_heat_J_kgK);
+    s.conductivity_W_mK = r.positiveOr(QStringLiteral("conductivity_W_mK"), s.conductivity_W_mK);
+    s.extra = r.rest();
+    return s;
+}
+
+Channel readChannel(ObjectReader r) {
+    Channel c;
+    c.id = r.string(QStringLiteral("id"), true);
+    if (!isValidIdentifier(c.id) || isAxisColumn(c.id) || c.id == QLatin1String("run") ||
+        c.id == QLatin1String("time_s"))
+        r.fail(QStringLiteral("id"), QStringLiteral("'%1' is not a valid channel id ([A-Za-z0-9_]+, "
+                                                    "not run, time_s or an axis column)")
+                                         .arg(c.id));
+    QString quantity = r.string(QStringLiteral("quantity"), true);
+    auto q = quantityFromString(quantity);
+    if (!q)
+        r.fail(QStringLiteral("quantity"),
+               QStringLiteral("unknown quantity '%1' (expected temperature, displacement or speed)")
+                   .arg(quantity));
+    c.quantity = *q;
+    QString role = r.string(QStringLiteral("role"), true);
+    auto ro = roleFromString(role);
+    if (!ro || !roleAllowedFor(c.quantity, *ro))
+        r.fail(QStringLiteral("role"),
+               QStringLiteral("unknown role '%1' for a %2 channel").arg(role, quantity));
+    c.role = *ro;
+    c.location = r.string(QStringLiteral("location"), false);
+    c.position_mm = r.optionalNumber(QStringLiteral("position_mm"));
+    c.extra = r.rest();
+    return c;
+}
+
+Run readRun(ObjectReader r) {
+    Run run;
+    run.id = r.string(QStringLiteral("id"), true);
+    if (!isValidIdentifier(run.id))
+        r.fail(QStringLiteral("id"), QStringLiteral("'%1' is not a valid run id ([A-Za-z0-9_]+)").arg(run.id));
+    QString kind = r.string(QStringLiteral("kind"), true);
+    auto k = runKindFromString(kind);
+    if (!k)
+        r.fail(QStringLiteral("kind"),
+               QStringLiteral("unknown run kind '%1' (expected moving, spindle, etve or positioning)")
+                   .arg(kind));
+    run.kind = *k;
+    run.feed_mm_min = r.optionalNumber(QStringLiteral("feed_mm_min"));
+    run.range_mm = r.optionalRange(QStringLiteral("range_mm"));
+    run.description = r.string(QStringLiteral("description"), false);
+    run.extra = r.rest();
+    return run;
+}
+
+}  // namespace
+
+Campaign campaignFromJson(const QByteArray& json, const QString& fileName) {
+    QJsonParseError parseError;
+    QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        QByteArray before = json.left(parseError.offset);
+        int line = int(before.count('\n')) + 1;
+        int column = int(parseError.offset - (before.lastIndexOf('\n') + 1)) + 1;
+        throw BundleException({fileName, line, column, parseError.errorString()});
+    }
+    if (!doc.isObject()) throw BundleException({fileName, 1, 1, QStringLiteral("expected a JSON object")});
+
+    ObjectReader r(doc.object(), QString(), fileName);
+    Campaign c;
+    QString format = r.string(QStringLiteral("format"), true);
+    if (format != kCampaignFormat)
+        r.fail(QStringLiteral("format"),
+               QStringLiteral("unsupported format '%1' (expected %2)").arg(format, kCampaignFormat));
+    c.name = r.string(QStringLiteral("name"), true);
+
+    ObjectReader machine = r.object(QStringLiteral("machine"));
+    c.machine.name = machine.string(QStringLiteral("name"), true);
+    c.machine.axis = machine.string(QStringLiteral("axis"), false);
+    c.machine.controller = machine.string(QStringLiteral("controller"), false);
+    c.machine.extra = machine.rest();
+
+    if (r.has(QStringLiteral("screw"))) c.screw = readScrew(r.object(QStringLiteral("screw")));
+    if (r.has(QStringLiteral("nut_length_mm")))
+        c.nut_length_mm = r.positive(QStringLiteral("nut_length_mm"));
+    c.travel_mm = r.optionalRange(QStringLiteral("travel_mm"));
+    if (r.has(QStringLiteral("interferometer"))) {
+        ObjectReader i = r.object(QStringLiteral("interferometer"));
+        Interferometer interferometer;
+        interferometer.dead_path_mm = i.optionalNumber(QStringLiteral("dead_path_mm")).value_or(0);
+        if (interferometer.dead_path_mm < 0)
+            i.fail(QStringLiteral("dead_path_mm"), QStringLiteral("must not be negative"));
+        QJsonValue comp = i.take(QStringLiteral("environment_compensation"));
+        if (!comp.isUndefined() && !comp.isBool())
+            i.fail(QStringLiteral("environment_compensation"), QStringLiteral("expected true or false"));
+        interferometer.environment_compensation = comp.toBool(true);
+        interferometer.extra = i.rest();
+        c.interferometer = interferometer;
+    }
+
+    QJsonArray channels = r.array(QStringLiteral("channels"));
+    for (int i = 0; i < channels.size(); ++i) {
+        Channel ch = readChannel(elementReader(channels, i, QStringLiteral("channels"), fileName));
+        if (c.findChannel(ch.id))
+            throw BundleException({fileName, 0, 0,
+                                   QStringLiteral("channels[%1].id: duplicate channel id '%2'").arg(i).arg(ch.id)});
+        c.channels.push_back(std::move(ch));
+    }
+    QJsonArray runs = r.array(QStringLiteral("runs"));
+    for (int i = 0; i < runs.size(); ++i) {
+        Run run = readRun(elementReader(runs, i, QStringLiteral("runs"), fileName));
+        if (c.findRun(run.id))
+            throw BundleException({fileName, 0, 0,
+                                   QStringLiteral("runs[%1].id: duplicate run id '%2'").arg(i).arg(run.id)});
+        if (isFeedAxisRun(run.kind) && (!c.screw || !c.nut_length_mm))
+            throw BundleException(
+                {fileName, 0, 0,
+                 QStringLiteral("runs[%1]: a %2 run needs 'screw' and 'nut_length_mm' in the campaign")
+                     .arg(i)
+                     .arg(toString(run.kind))});
+        c.runs.push_back(std::move(run));
+    }
+    c.extra = r.rest();
+    return c;
+}
+
+QJsonObject campaignToJson(const Campaign& c) {
+    auto range = [](const RangeMm& r) { return QJsonArray{r.from_mm, r.to_mm}; };
+    auto merged = [](QJsonObject known, const QJsonObject& extra) {
+        for (auto it = extra.begin(); it != extra.end(); ++it) known.insert(it.key(), it.value());
+        return known;
+    };
+
+    QJsonObject o = c.extra;
+    o[QStringLiteral("format")] = kCampaignFormat;
+    o[QStringLiteral("name")] = c.name;
+    QJsonObject machine{{QStringLiteral("name"), c.machine.name}};
+    if (!c.machine.axis.isEmpty()) machine[QStringLiteral("axis")] = c.machine.axis;
+    if (!c.machine.controller.isEmpty()) machine[QStringLiteral("controller")] = c.machine.controller;
+    o[QStringLiteral("machine")] = merged(machine, c.machine.extra);
+    if (c.screw) {
+        const Screw& s = *c.screw;
+        o[QStringLiteral("screw")] = merged(
+            QJsonObject{{QStringLiteral("length_mm"), s.length_mm},
+                        {QStringLiteral("diameter_mm"), s.diameter_mm},
+                        {QStringLiteral("lead_mm"), s.lead_mm},
+                        {QStringLiteral("fixed_end_mm"), s.fixed_end_mm},
+                        {QStringLiteral("mounting"), s.mounting},
+                        {QStringLiteral("alpha_per_K"), s.alpha_per_K},
+                        {QStringLiteral("density_kg_m3"), s.density_kg_m3},
+                        {QStringLiteral("specific_heat_J_kgK"), s.specific_heat_J_kgK},
+                        {QStringLiteral("conductivity_W_mK"), s.conductivity_W_mK}},
+            s.extra);
+    }
+    if (c.nut_length_mm) o[QStringLiteral("nut_length_mm")] = *c.nut_length_mm;
+    if (c.travel_mm) o[QStringLiteral("travel_mm")] = range(*c.travel_mm);
+    if (c.interferometer)
+        o[QStringLiteral("interferometer")] = merged(
+            QJsonObject{{QStringLiteral("dead_path_mm"), c.interferometer->dead_path_mm},
+                        {QStringLiteral("environment_compensation"),
+                         c.interferometer->environment_compensation}},
+            c.interferometer->extra);
+
+    QJsonArray channels;
+    for (const Channel& ch : c.channels) {
+        QJsonObject j{{QStringLiteral("id"), ch.id},
+                      {QStringLiteral("quantity"), toString(ch.quantity)},
+                      {QStringLiteral("role"), toString(ch.role)}};
+        if (!ch.location.isEmpty()) j[QStringLiteral("location")] = ch.location;
+        if (ch.position_mm) j[QStringLiteral("position_mm")] = *ch.position_mm;
+        channels.append(merged(j, ch.extra));
+    }
+    o[QStringLiteral("channels")] = channels;
+
+    QJsonArray runs;
+    for (const Run& run : c.runs) {
+        QJsonObject j{{QStringLiteral("id"), run.id}, {QStringLiteral("kind"), toString(run.kind)}};
+        if (run.feed_mm_min) j[QStringLiteral("feed_mm_min")] = *run.feed_mm_min;
+        if (run.range_mm) j[QStringLiteral("range_mm")] = range(*run.range_mm);
+        if (!run.description.isEmpty()) j[QStringLiteral("description")] = run.description;
+        runs.append(merged(j, run.extra));
+    }
+    o[QStringLiteral("runs")] = runs;
+    return o;
+}
+
+}  // namespace driftlab

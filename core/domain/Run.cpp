@@ -1,0 +1,52 @@
+#include "core/domain/Run.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace driftlab {
+
+QString toString(RunKind kind) {
+    switch (kind) {
+        case RunKind::Moving: return QStringLiteral("moving");
+        case RunKind::Spindle: return QStringLiteral("spindle");
+        case RunKind::Etve: return QStringLiteral("etve");
+        case RunKind::Positioning: return QStringLiteral("positioning");
+    }
+    return {};
+}
+
+std::optional<RunKind> runKindFromString(const QString& text) {
+    for (RunKind kind : {RunKind::Moving, RunKind::Spindle, RunKind::Etve, RunKind::Positioning})
+        if (toString(kind) == text) return kind;
+    return std::nullopt;
+}
+
+bool isFeedAxisRun(RunKind kind) { return kind == RunKind::Moving || kind == RunKind::Positioning; }
+
+int SampleSeries::columnIndex(const QString& column) const {
+    auto it = std::find(columns.begin(), columns.end(), column);
+    return it == columns.end() ? -1 : int(it - columns.begin());
+}
+
+std::size_t SampleSeries::presentValueCount() const {
+    std::size_t n = 0;
+    for (const auto& column : values)
+        n += std::count_if(column.begin(), column.end(), [](double v) { return !std::isnan(v); });
+    return n;
+}
+
+bool SampleSeries::operator==(const SampleSeries& other) const {
+    // Bitwise comparison so that two missing samples (NaN) compare equal.
+    auto same = [](const std::vector<double>& a, const std::vector<double>& b) {
+        return a.size() == b.size() &&
+               (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+    };
+    if (!same(time_s, other.time_s) || columns != other.columns ||
+        values.size() != other.values.size())
+        return false;
+    for (std::size_t i = 0; i < values.size(); ++i)
+        if (!same(values[i], other.values[i])) return false;
+    return true;
+}
+
+}  // namespace driftlab

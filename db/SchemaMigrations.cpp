@@ -1,0 +1,86 @@
+#include "db/SchemaMigrations.h"
+
+#include <QDir>
+#include <QFile>
+#include <QSqlError>
+#include <QSqlQuery>
+
+// The migrations live in a static library; its resources must be registered
+// explicitly (from the global namespace, as Q_INIT_RESOURCE requires).
+static void registerMigrationResources() { Q_INIT_RESOURCE(migrations); }
+
+namespace driftlab::db {
+namespace {
+
+QStringList migrationFiles() {
+    static const bool registered = (registerMigrationResources(), true);
+    Q_UNUSED(registered);
+    // Named NNNN_what.sql; the number is the version the migration produces.
+    return QDir(QStringLiteral(":/driftlab/migrations"))
+        .entryList({QStringLiteral("*.sql")}, QDir::Files, QDir::Name);
+}
+
+/// Splits a migration into statements. Statements end with ';' at the end of a
+/// line; migrations contain no triggers, so this is all the parsing they need.
+QStringList statements(const QString& sql) {
+    QStringList out;
+    QString current;
+    for (const QString& line : sql.split(QLatin1Char('\n'))) {
+        if (line.trimmed().startsWith(QLatin1String("--"))) continue;
+        current += line + QLatin1Char('\n');
+        if (line.trimmed().endsWith(QLatin1Char(';'))) {
+            out << current.trimmed();
+            current.clear();
+        }
+    }
+    if (!current.trimmed().isEmpty()) out << current.trimmed();
+    return out;
+}
+
+}  // namespace
+
+int latestSchemaVersion() { return int(migrationFiles().size()); }
+
+int schemaVersion(QSqlDatabase& db) {
+    QSqlQuery q(db);
+    return q.exec(QStringLiteral("PRAGMA user_version")) && q.next() ? q.value(0).toInt() : -1;
+}
+
+bool migrate(QSqlDatabase& db, QString* error, int target) {
+    const QStringList files = migrationFiles();
+    if (target < 0) target = int(files.size());
+    int version = schemaVersion(db);
+    if (version > int(files.size())) {
+        *error = QStringLiteral("database schema v%1 is newer than this build (v%2); update DriftLab")
+                     .arg(version)
+                     .arg(files.size());
+        return false;
+    }
+    for (; version < target; ++version) {
+        const QString name = files[version];
+        QFile file(QStringLiteral(":/driftlab/migrations/") + name);
+        file.open(QIODevice::ReadOnly);
+        if (!db.transaction()) {
+            *error = QStringLiteral("migration %1: %2").arg(name, db.lastError().text());
+            return false;
+        }
+        QSqlQuery q(db);
+        QStringList all = statements(QString::fromUtf8(file.readAll()));
+        all << QStringLiteral("PRAGMA user_version = %1").arg(version + 1);
+        for (const QString& statement : all) {
+            if (!q.exec(statement)) {
+                *error = QStringLiteral("migration %1 failed: %2").arg(name, q.lastError().text());
+                db.rollback();
+                return false;
+            }
+        }
+        if (!db.commit()) {
+            *error = QStringLiteral("migration %1: commit failed: %2").arg(name, db.lastError().text());
+            db.rollback();
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace driftlab::db

@@ -1,0 +1,39 @@
+// Import throughput: a one-million-sample bundle read from disk and stored in
+// one SQLite transaction (what `driftlab-cli import` does).
+#include <QTemporaryDir>
+#include <benchmark/benchmark.h>
+
+#include "tests/core/BundleTestSupport.h"
+#include "core/bundle/BundleReader.h"
+#include "core/bundle/BundleWriter.h"
+#include "db/CampaignStore.h"
+
+using namespace driftlab;
+
+static void BM_ImportMillionSampleBundle(benchmark::State& state) {
+    QTemporaryDir dir;
+    const QString bundle = dir.filePath(QStringLiteral("bundle"));
+    writeBundle(test::generatedCampaign(125'000), bundle);  // 8 columns -> 1e6 samples
+    int round = 0;
+    for (auto _ : state) {
+        BundleReadResult read = readBundle(bundle);
+        QString error;
+        auto store = db::CampaignStore::open(dir.filePath(QStringLiteral("lab%1.sqlite").arg(round++)), &error);
+        if (!read.ok() || !store || !store->importCampaign(*read.campaign, &error))
+            state.SkipWithError("import failed");
+    }
+    state.counters["samples_per_s"] =
+        benchmark::Counter(1e6 * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ImportMillionSampleBundle)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+static void BM_ReadMillionSampleBundle(benchmark::State& state) {
+    QTemporaryDir dir;
+    writeBundle(test::generatedCampaign(125'000), dir.path());
+    for (auto _ : state) benchmark::DoNotOptimize(readBundle(dir.path()));
+    state.counters["samples_per_s"] =
+        benchmark::Counter(1e6 * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ReadMillionSampleBundle)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+BENCHMARK_MAIN();

@@ -1,0 +1,109 @@
+// Campaign bundles read back exactly what was written (DESIGN.md section 2).
+#include <QTemporaryDir>
+#include <gtest/gtest.h>
+
+#include "tests/core/BundleTestSupport.h"
+#include "core/bundle/BundleReader.h"
+#include "core/bundle/BundleWriter.h"
+
+using namespace driftlab;
+using namespace driftlab::test;
+
+TEST(BundleReader, readsTheExampleCampaignWithFeedAxisAndSpindleRuns) {
+    BundleReadResult result = readBundle(exampleBundlePath());
+    ASSERT_TRUE(result.ok()) << qPrintable(result.error->toString());
+    const Campaign& c = *result.campaign;
+    EXPECT_EQ(c.name, QStringLiteral("X axis moving-state example"));
+    ASSERT_TRUE(c.screw);
+    EXPECT_DOUBLE_EQ(c.screw->lead_mm, 10);
+    EXPECT_DOUBLE_EQ(c.screw->fixed_end_mm, -40);
+    EXPECT_EQ(c.channels.size(), 13u);
+    ASSERT_EQ(c.runs.size(), 2u);
+
+    const driftlab::Run& s1 = c.runs[0];
+    EXPECT_EQ(s1.kind, RunKind::Moving);
+    EXPECT_EQ(s1.samples.rowCount(), 361u);
+    EXPECT_EQ(s1.positioning.size(), 7u * 22u);
+    EXPECT_FALSE(s1.motion.empty());
+    // The dropout at row 38 of S1 is a missing sample, not a zero.
+    const int bearing = s1.samples.columnIndex(QStringLiteral("T_bearing_fixed"));
+    EXPECT_TRUE(std::isnan(s1.samples.values[std::size_t(bearing)][37]));
+
+    const driftlab::Run& sp1 = c.runs[1];
+    EXPECT_EQ(sp1.kind, RunKind::Spindle);
+    const Channel* probe = c.findChannel(QStringLiteral("D_z"));
+    ASSERT_NE(probe, nullptr);
+    EXPECT_EQ(probe->quantity, Quantity::Displacement);
+    EXPECT_EQ(probe->role, ChannelRole::DriftZ);
+    const int dz = sp1.samples.columnIndex(QStringLiteral("D_z"));
+    EXPECT_LT(*std::min_element(sp1.samples.values[std::size_t(dz)].begin(),
+                                sp1.samples.values[std::size_t(dz)].end()),
+              -10.0)
+        << "the spindle run's z drift probe carries its thermal drift in µm";
+}
+
+TEST(BundleWriter, writeThenReadGivesTheSameCampaignAndTheSameBytes) {
+    BundleReadResult original = readBundle(exampleBundlePath());
+    ASSERT_TRUE(original.ok());
+    QTemporaryDir dir;
+    ASSERT_FALSE(writeBundle(*original.campaign, dir.filePath(QStringLiteral("a"))));
+    BundleReadResult again = readBundle(dir.filePath(QStringLiteral("a")));
+    ASSERT_TRUE(again.ok()) << qPrintable(again.error->toString());
+    EXPECT_EQ(*again.campaign, *original.campaign);
+
+    ASSERT_FALSE(writeBundle(*again.campaign, dir.filePath(QStringLiteral("b"))));
+    for (const char* name : {"campaign.json", "samples.csv", "motion.csv", "positioning.csv"})
+        EXPECT_EQ(readFile(dir.filePath(QStringLiteral("a/") + QLatin1String(name))),
+                  readFile(dir.filePath(QStringLiteral("b/") + QLatin1String(name))))
+            << name;
+}
+
+TEST(BundleWriter, numbersSurviveExactlyIncludingOnesWithoutAShortDecimalForm) {
+    Campaign c = generatedCampaign(1000, 3);
+    c.runs[0].samples.values[0][5] = 0.1 + 0.2;  // 0.30000000000000004
+    c.runs[0].samples.values[1][6] = 1e-300;
+    c.runs[0].samples.values[2][7] = std::numeric_limits<double>::quiet_NaN();  // a dropout
+    QTemporaryDir dir;
+    ASSERT_FALSE(writeBundle(c, dir.path()));
+    BundleReadResult back = readBundle(dir.path());
+    ASSERT_TRUE(back.ok()) << qPrintable(back.error->toString());
+    EXPECT_EQ(*back.campaign, c);
+}
+
+TEST(BundleWriter, unknownKeysAreKeptForTheToolThatWroteThem) {
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    replaceInFile(dir.filePath(QStringLiteral("campaign.json")), "\"nut_length_mm\"",
+                  "\"operator\": {\"name\": \"A. Engineer\"}, \"nut_length_mm\"");
+    BundleReadResult read = readBundle(dir.path());
+    ASSERT_TRUE(read.ok());
+    EXPECT_EQ(read.campaign->extra.value(QStringLiteral("operator")).toObject().value(QStringLiteral("name")),
+              QStringLiteral("A. Engineer"));
+    ASSERT_FALSE(writeBundle(*read.campaign, dir.filePath(QStringLiteral("out"))));
+    EXPECT_TRUE(readFile(dir.filePath(QStringLiteral("out/campaign.json"))).contains("A. Engineer"));
+}
+
+TEST(BundleReader, rowsWithoutAnyValueAreSkippedWithAWarning) {
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    replaceInFile(dir.filePath(QStringLiteral("samples.csv")), "\nS1,30,", "\nS1,25,,,,,,,,,,,,,,,,\nS1,30,");
+    BundleReadResult read = readBundle(dir.path());
+    ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
+    ASSERT_EQ(read.warnings.size(), 1);
+    EXPECT_TRUE(read.warnings[0].startsWith(QStringLiteral("samples.csv:5: 1 row(s) without any value")))
+        << qPrintable(read.warnings[0]);
+    EXPECT_EQ(read.campaign->runs[0].samples.rowCount(), 361u);
+}
+
+TEST(BundleReader, progressCallbackCanCancelAndNothingIsReturned) {
+    QTemporaryDir dir;
+    ASSERT_FALSE(writeBundle(generatedCampaign(200'000), dir.path()));
+    int calls = 0;
+    BundleReadOptions options;
+    options.progress = [&](double) { return ++calls < 2; };
+    BundleReadResult read = readBundle(dir.path(), options);
+    EXPECT_FALSE(read.ok());
+    ASSERT_TRUE(read.error);
+    EXPECT_EQ(read.error->message, QStringLiteral("import cancelled"));
+    EXPECT_EQ(calls, 2);
+}

@@ -1,0 +1,55 @@
+// Every bad-input class of the bundle format gives an error naming file,
+// line and column, and returns no campaign (issue #2).
+#include <QTemporaryDir>
+#include <gtest/gtest.h>
+
+#include "tests/core/BundleTestSupport.h"
+#include "core/bundle/BundleReader.h"
+
+using namespace driftlab;
+using namespace driftlab::test;
+
+class BadBundle : public ::testing::TestWithParam<BadBundleCase> {};
+
+TEST_P(BadBundle, isRejectedWithFileLineColumnAndReason) {
+    const BadBundleCase& bad = GetParam();
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    bad.breakIt(dir.path());
+
+    BundleReadResult result = readBundle(dir.path());
+    EXPECT_FALSE(result.ok());
+    ASSERT_TRUE(result.error.has_value());
+    const QString text = result.error->toString();
+    EXPECT_TRUE(text.startsWith(QLatin1String(bad.expectedLocation))) << qPrintable(text);
+    EXPECT_TRUE(text.contains(QLatin1String(bad.expectedMessage))) << qPrintable(text);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryClass, BadBundle, ::testing::ValuesIn(badBundleCases()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(BundleReader, missingFolderIsNamed) {
+    BundleReadResult result = readBundle(QStringLiteral("/nonexistent/bundle"));
+    ASSERT_TRUE(result.error);
+    EXPECT_EQ(result.error->toString(), QStringLiteral("/nonexistent/bundle: not a bundle folder"));
+}
+
+TEST(BundleReader, feedAxisRunWithoutScrewIsRejected) {
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    replaceInFile(dir.filePath(QStringLiteral("campaign.json")), "\"nut_length_mm\": 80,", "");
+    BundleReadResult result = readBundle(dir.path());
+    ASSERT_TRUE(result.error);
+    EXPECT_EQ(result.error->toString(),
+              QStringLiteral("campaign.json: runs[0]: a moving run needs 'screw' and 'nut_length_mm' in the campaign"));
+}
+
+TEST(BundleReader, expansionCoefficientInPpmIsAUnitMixUp) {
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    replaceInFile(dir.filePath(QStringLiteral("campaign.json")), "1.15e-05", "11.5");
+    BundleReadResult result = readBundle(dir.path());
+    ASSERT_TRUE(result.error);
+    EXPECT_TRUE(result.error->toString().startsWith(QStringLiteral("campaign.json: screw.alpha_per_K: 11.5 per K")))
+        << qPrintable(result.error->toString());
+}
