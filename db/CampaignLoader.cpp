@@ -28,7 +28,7 @@ std::optional<RangeMm> rangeOf(const QVariant& from, const QVariant& to) {
 /// Rebuilds the wide series from the long sample rows: one row per distinct time.
 void loadSamples(sqlite3* handle, qint64 runId, const QHash<qint64, int>& columnOfChannel,
                  SampleSeries& s) {
-    SqliteStatement q(handle, "SELECT channel_id, t, value FROM sample WHERE run_id = ? ORDER BY t, rowid");
+    SqliteStatement q(handle, "SELECT channel_id, t, value FROM sample WHERE run_id = ? ORDER BY t");
     if (!q.ok()) throw q.error();
     q.bind(1, runId);
     s.values.assign(s.columns.size(), {});

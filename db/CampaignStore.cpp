@@ -122,7 +122,7 @@ std::optional<qint64> CampaignStore::importCampaign(const Campaign& c, QString* 
                                  QVariant(QMetaType(QMetaType::Int)), int(k), QStringLiteral("{}")});
 
         SqliteStatement sampleInsert(sqliteHandle(m_db),
-                                     "INSERT INTO sample (run_id, channel_id, t, value) VALUES (?, ?, ?, ?)");
+                                     "INSERT INTO sample (run_id, t, channel_id, value) VALUES (?, ?, ?, ?)");
         if (!sampleInsert.ok()) throw sampleInsert.error();
         std::size_t totalRows = 0, doneRows = 0;
         for (const Run& run : c.runs) totalRows += run.samples.rowCount();
@@ -149,11 +149,11 @@ std::optional<qint64> CampaignStore::importCampaign(const Campaign& c, QString* 
             const SampleSeries& s = run.samples;
             sampleInsert.bind(1, runId);
             for (std::size_t row = 0; row < s.rowCount(); ++row) {
-                sampleInsert.bind(3, s.time_s[row]);
+                sampleInsert.bind(2, s.time_s[row]);
                 for (std::size_t k = 0; k < s.values.size(); ++k) {
                     const double v = s.values[k][row];
                     if (std::isnan(v)) continue;  // a missing sample has no row
-                    sampleInsert.bind(2, columnChannel[k]);
+                    sampleInsert.bind(3, columnChannel[k]);
                     sampleInsert.bind(4, v);
                     if (!sampleInsert.execute()) throw sampleInsert.error();
                 }

@@ -68,15 +68,18 @@ CREATE TABLE run (
     UNIQUE (campaign_id, name)
 );
 
--- One present sample value; a missing sample has no row.
+-- One present sample value; a missing sample has no row. Keyed by (run, time,
+-- channel), the order in which samples are logged, so inserting is an append
+-- and reading a run in time order needs no sort. channel_id has no foreign key:
+-- channels are only deleted with their campaign, whose runs take the samples
+-- with them, and a key on it would scan the whole table per deleted channel.
 CREATE TABLE sample (
     run_id INTEGER NOT NULL REFERENCES run(id) ON DELETE CASCADE,
-    channel_id INTEGER NOT NULL REFERENCES channel(id) ON DELETE CASCADE,
     t REAL NOT NULL,
-    value REAL NOT NULL
-);
-CREATE INDEX sample_by_run_time ON sample (run_id, t);
-CREATE INDEX sample_by_channel ON sample (channel_id);
+    channel_id INTEGER NOT NULL,
+    value REAL NOT NULL,
+    PRIMARY KEY (run_id, t, channel_id)
+) WITHOUT ROWID;
 
 CREATE TABLE motion_segment (
     run_id INTEGER NOT NULL REFERENCES run(id) ON DELETE CASCADE,

@@ -32,7 +32,7 @@ void writeSchemaV1Database(const QString& path) {
              "INSERT INTO screw VALUES (1, 900, 40, 10, -40, 'fixed-free', 1.15e-05, 7850, 460, 45, '{}')",
              "INSERT INTO channel VALUES (1, 1, 'T_nut', 'temperature', 'nut', 'nut flank', NULL, 0, 0, '{}')",
              "INSERT INTO run VALUES (1, 1, 'S1', 0, 'moving', 8000, 210, 490, 'legacy run', '{}')",
-             "INSERT INTO sample VALUES (1, 1, 0, 20.0), (1, 1, 1, 20.5)",
+             "INSERT INTO sample VALUES (1, 0, 1, 20.0), (1, 1, 1, 20.5)",
              "INSERT INTO positioning VALUES (1, 0, 0, 350, '+', 1.5)"}) {
         ASSERT_TRUE(q.exec(QString::fromLatin1(sql))) << sql << " " << qPrintable(q.lastError().text());
     }
