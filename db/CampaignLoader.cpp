@@ -28,7 +28,8 @@ std::optional<RangeMm> rangeOf(const QVariant& from, const QVariant& to) {
 /// Rebuilds the wide series from the long sample rows: one row per distinct time.
 void loadSamples(sqlite3* handle, qint64 runId, const QHash<qint64, int>& columnOfChannel,
                  SampleSeries& s) {
-    SqliteStatement q(handle, "SELECT channel_id, t, value FROM sample WHERE run_id = ? ORDER BY t");
+    SqliteStatement q(handle,
+                      "SELECT channel_id, t, value FROM sample WHERE run_id = ? ORDER BY t");
     if (!q.ok()) throw q.error();
     q.bind(1, runId);
     s.values.assign(s.columns.size(), {});
@@ -40,7 +41,8 @@ void loadSamples(sqlite3* handle, qint64 runId, const QHash<qint64, int>& column
             s.time_s.push_back(t);
             for (auto& column : s.values) column.push_back(nan);
         }
-        s.values[std::size_t(columnOfChannel.value(channel))].back() = sqlite3_column_double(q.get(), 2);
+        s.values[std::size_t(columnOfChannel.value(channel))].back() =
+            sqlite3_column_double(q.get(), 2);
     }
 }
 
@@ -49,25 +51,33 @@ void loadSamples(sqlite3* handle, qint64 runId, const QHash<qint64, int>& column
 std::optional<Campaign> CampaignStore::loadCampaign(qint64 id, QString* error) const {
     try {
         Campaign c;
-        QSqlQuery q = select(m_db,
-                             QStringLiteral("SELECT name, nut_length_mm, travel_from_mm, travel_to_mm, extra_json "
-                                            "FROM campaign WHERE id = ?"),
-                             id);
+        QSqlQuery q = select(
+            m_db,
+            QStringLiteral("SELECT name, nut_length_mm, travel_from_mm, travel_to_mm, extra_json "
+                           "FROM campaign WHERE id = ?"),
+            id);
         if (!q.next()) throw QStringLiteral("no campaign with id %1").arg(id);
         c.name = q.value(0).toString();
         c.nut_length_mm = optionalDouble(q.value(1));
         c.travel_mm = rangeOf(q.value(2), q.value(3));
         c.extra = jsonObject(q.value(4));
 
-        q = select(m_db, QStringLiteral("SELECT name, axis, controller, extra_json FROM machine WHERE campaign_id = ?"), id);
+        q = select(
+            m_db,
+            QStringLiteral(
+                "SELECT name, axis, controller, extra_json FROM machine WHERE campaign_id = ?"),
+            id);
         if (q.next())
-            c.machine = {q.value(0).toString(), q.value(1).toString(), q.value(2).toString(), jsonObject(q.value(3))};
+            c.machine = {q.value(0).toString(), q.value(1).toString(), q.value(2).toString(),
+                         jsonObject(q.value(3))};
 
-        q = select(m_db,
-                   QStringLiteral("SELECT length_mm, diameter_mm, lead_mm, fixed_end_mm, mounting, alpha_per_K, "
-                                  "density_kg_m3, specific_heat_J_kgK, conductivity_W_mK, extra_json "
-                                  "FROM screw WHERE campaign_id = ?"),
-                   id);
+        q = select(
+            m_db,
+            QStringLiteral(
+                "SELECT length_mm, diameter_mm, lead_mm, fixed_end_mm, mounting, alpha_per_K, "
+                "density_kg_m3, specific_heat_J_kgK, conductivity_W_mK, extra_json "
+                "FROM screw WHERE campaign_id = ?"),
+            id);
         if (q.next())
             c.screw = Screw{q.value(0).toDouble(), q.value(1).toDouble(), q.value(2).toDouble(),
                             q.value(3).toDouble(), q.value(4).toString(), q.value(5).toDouble(),
@@ -79,12 +89,14 @@ std::optional<Campaign> CampaignStore::loadCampaign(qint64 id, QString* error) c
                                   "FROM interferometer WHERE campaign_id = ?"),
                    id);
         if (q.next())
-            c.interferometer = Interferometer{q.value(0).toDouble(), q.value(1).toBool(), jsonObject(q.value(2))};
+            c.interferometer =
+                Interferometer{q.value(0).toDouble(), q.value(1).toBool(), jsonObject(q.value(2))};
 
         q = select(m_db,
-                   QStringLiteral("SELECT id, name, quantity, role, location, position_mm, declared_ordinal, "
-                                  "column_ordinal, extra_json FROM channel WHERE campaign_id = ? "
-                                  "ORDER BY declared_ordinal, column_ordinal"),
+                   QStringLiteral(
+                       "SELECT id, name, quantity, role, location, position_mm, declared_ordinal, "
+                       "column_ordinal, extra_json FROM channel WHERE campaign_id = ? "
+                       "ORDER BY declared_ordinal, column_ordinal"),
                    id);
         QHash<qint64, int> columnOfChannel;
         std::vector<std::pair<int, QString>> columns;
@@ -106,10 +118,12 @@ std::optional<Campaign> CampaignStore::loadCampaign(qint64 id, QString* error) c
         std::sort(columns.begin(), columns.end());
         for (const auto& [ordinal, name] : columns) c.sample_columns.push_back(name);
 
-        q = select(m_db,
-                   QStringLiteral("SELECT id, name, kind, feed_mm_min, range_from_mm, range_to_mm, description, "
-                                  "extra_json FROM run WHERE campaign_id = ? ORDER BY ordinal"),
-                   id);
+        q = select(
+            m_db,
+            QStringLiteral(
+                "SELECT id, name, kind, feed_mm_min, range_from_mm, range_to_mm, description, "
+                "extra_json FROM run WHERE campaign_id = ? ORDER BY ordinal"),
+            id);
         sqlite3* handle = sqliteHandle(m_db);
         while (q.next()) {
             Run run;
@@ -121,21 +135,25 @@ std::optional<Campaign> CampaignStore::loadCampaign(qint64 id, QString* error) c
             run.description = q.value(6).toString();
             run.extra = jsonObject(q.value(7));
 
-            QSqlQuery m = select(m_db,
-                                 QStringLiteral("SELECT start_s, end_s, from_mm, to_mm, feed_mm_min FROM "
-                                                "motion_segment WHERE run_id = ? ORDER BY rowid"),
-                                 runId);
+            QSqlQuery m =
+                select(m_db,
+                       QStringLiteral("SELECT start_s, end_s, from_mm, to_mm, feed_mm_min FROM "
+                                      "motion_segment WHERE run_id = ? ORDER BY rowid"),
+                       runId);
             while (m.next())
-                run.motion.push_back({m.value(0).toDouble(), m.value(1).toDouble(), m.value(2).toDouble(),
-                                      m.value(3).toDouble(), m.value(4).toDouble()});
-            QSqlQuery p = select(m_db,
-                                 QStringLiteral("SELECT time_s, cycle, target_mm, direction, deviation_um FROM "
-                                                "positioning WHERE run_id = ? ORDER BY rowid"),
-                                 runId);
+                run.motion.push_back({m.value(0).toDouble(), m.value(1).toDouble(),
+                                      m.value(2).toDouble(), m.value(3).toDouble(),
+                                      m.value(4).toDouble()});
+            QSqlQuery p = select(
+                m_db,
+                QStringLiteral("SELECT time_s, cycle, target_mm, direction, deviation_um FROM "
+                               "positioning WHERE run_id = ? ORDER BY rowid"),
+                runId);
             while (p.next())
                 run.positioning.push_back(
                     {p.value(0).toDouble(), p.value(1).toInt(), p.value(2).toDouble(),
-                     p.value(3).toString() == QLatin1String("+") ? Direction::Positive : Direction::Negative,
+                     p.value(3).toString() == QLatin1String("+") ? Direction::Positive
+                                                                 : Direction::Negative,
                      p.value(4).toDouble()});
 
             run.samples.columns = c.sample_columns;

@@ -52,10 +52,11 @@ std::unique_ptr<CampaignStore> CampaignStore::open(const QString& path, QString*
     QSqlQuery q(db);
     // WAL: readers never block the logger; NORMAL sync in WAL mode keeps the file
     // consistent on power loss and loses at most the last committed transactions.
-    for (const char* pragma : {"PRAGMA foreign_keys = ON", "PRAGMA journal_mode = WAL",
-                               "PRAGMA synchronous = NORMAL"})
+    for (const char* pragma :
+         {"PRAGMA foreign_keys = ON", "PRAGMA journal_mode = WAL", "PRAGMA synchronous = NORMAL"})
         if (!q.exec(QString::fromLatin1(pragma)))
-            return fail(QStringLiteral("not a usable SQLite database (%1)").arg(q.lastError().text()));
+            return fail(
+                QStringLiteral("not a usable SQLite database (%1)").arg(q.lastError().text()));
     QString migrationError;
     if (!migrate(db, &migrationError)) return fail(migrationError);
     return std::unique_ptr<CampaignStore>(new CampaignStore(db));
@@ -77,14 +78,16 @@ std::optional<qint64> CampaignStore::importCampaign(const Campaign& c, QString* 
     try {
         Inserter sql(m_db);
         const qint64 campaignId = sql.insert(
-            QStringLiteral("INSERT INTO campaign (name, nut_length_mm, travel_from_mm, travel_to_mm, "
-                           "extra_json) VALUES (?, ?, ?, ?, ?)"),
+            QStringLiteral(
+                "INSERT INTO campaign (name, nut_length_mm, travel_from_mm, travel_to_mm, "
+                "extra_json) VALUES (?, ?, ?, ?, ?)"),
             {c.name, toSql(c.nut_length_mm),
              toSql(c.travel_mm ? std::optional(c.travel_mm->from_mm) : std::nullopt),
-             toSql(c.travel_mm ? std::optional(c.travel_mm->to_mm) : std::nullopt), jsonText(c.extra)});
+             toSql(c.travel_mm ? std::optional(c.travel_mm->to_mm) : std::nullopt),
+             jsonText(c.extra)});
         sql.insert(QStringLiteral("INSERT INTO machine VALUES (?, ?, ?, ?, ?)"),
-                   {campaignId, text(c.machine.name), text(c.machine.axis), text(c.machine.controller),
-                    jsonText(c.machine.extra)});
+                   {campaignId, text(c.machine.name), text(c.machine.axis),
+                    text(c.machine.controller), jsonText(c.machine.extra)});
         if (const auto& s = c.screw)
             sql.insert(QStringLiteral("INSERT INTO screw VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
                        {campaignId, s->length_mm, s->diameter_mm, s->lead_mm, s->fixed_end_mm,
@@ -108,21 +111,24 @@ std::optional<qint64> CampaignStore::importCampaign(const Campaign& c, QString* 
         for (std::size_t k = 0; k < c.channels.size(); ++k) {
             const Channel& ch = c.channels[k];
             QVariant ordinal = columnOrdinal(ch.id);
-            qint64 id = sql.insert(channelSql, {campaignId, ch.id, toString(ch.quantity), toString(ch.role),
-                                                text(ch.location), toSql(ch.position_mm), int(k), ordinal,
-                                                jsonText(ch.extra)});
+            qint64 id =
+                sql.insert(channelSql, {campaignId, ch.id, toString(ch.quantity), toString(ch.role),
+                                        text(ch.location), toSql(ch.position_mm), int(k), ordinal,
+                                        jsonText(ch.extra)});
             if (!ordinal.isNull()) columnChannel[std::size_t(ordinal.toInt())] = id;
         }
         for (std::size_t k = 0; k < c.sample_columns.size(); ++k)
             if (isAxisColumn(c.sample_columns[k]))
-                columnChannel[k] = sql.insert(
-                    channelSql, {campaignId, c.sample_columns[k], QStringLiteral("axis"),
-                                 QVariant(QMetaType(QMetaType::QString)), QStringLiteral(""),
-                                 QVariant(QMetaType(QMetaType::Double)),
-                                 QVariant(QMetaType(QMetaType::Int)), int(k), QStringLiteral("{}")});
+                columnChannel[k] =
+                    sql.insert(channelSql,
+                               {campaignId, c.sample_columns[k], QStringLiteral("axis"),
+                                QVariant(QMetaType(QMetaType::QString)), QStringLiteral(""),
+                                QVariant(QMetaType(QMetaType::Double)),
+                                QVariant(QMetaType(QMetaType::Int)), int(k), QStringLiteral("{}")});
 
-        SqliteStatement sampleInsert(sqliteHandle(m_db),
-                                     "INSERT INTO sample (run_id, t, channel_id, value) VALUES (?, ?, ?, ?)");
+        SqliteStatement sampleInsert(
+            sqliteHandle(m_db),
+            "INSERT INTO sample (run_id, t, channel_id, value) VALUES (?, ?, ?, ?)");
         if (!sampleInsert.ok()) throw sampleInsert.error();
         std::size_t totalRows = 0, doneRows = 0;
         for (const Run& run : c.runs) totalRows += run.samples.rowCount();
@@ -141,10 +147,11 @@ std::optional<qint64> CampaignStore::importCampaign(const Campaign& c, QString* 
                 sql.insert(QStringLiteral("INSERT INTO motion_segment VALUES (?, ?, ?, ?, ?, ?)"),
                            {runId, m.start_s, m.end_s, m.from_mm, m.to_mm, m.feed_mm_min});
             for (const PositioningMeasurement& p : run.positioning)
-                sql.insert(QStringLiteral("INSERT INTO positioning VALUES (?, ?, ?, ?, ?, ?)"),
-                           {runId, p.time_s, p.cycle, p.target_mm,
-                            p.direction == Direction::Positive ? QStringLiteral("+") : QStringLiteral("-"),
-                            p.deviation_um});
+                sql.insert(
+                    QStringLiteral("INSERT INTO positioning VALUES (?, ?, ?, ?, ?, ?)"),
+                    {runId, p.time_s, p.cycle, p.target_mm,
+                     p.direction == Direction::Positive ? QStringLiteral("+") : QStringLiteral("-"),
+                     p.deviation_um});
 
             const SampleSeries& s = run.samples;
             sampleInsert.bind(1, runId);
@@ -157,7 +164,8 @@ std::optional<qint64> CampaignStore::importCampaign(const Campaign& c, QString* 
                     sampleInsert.bind(4, v);
                     if (!sampleInsert.execute()) throw sampleInsert.error();
                 }
-                if ((++doneRows & 0x3FFF) == 0 && progress && !progress(double(doneRows) / totalRows))
+                if ((++doneRows & 0x3FFF) == 0 && progress &&
+                    !progress(double(doneRows) / totalRows))
                     throw QStringLiteral("import cancelled");
             }
         }

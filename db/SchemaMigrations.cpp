@@ -7,7 +7,9 @@
 
 // The migrations live in a static library; its resources must be registered
 // explicitly (from the global namespace, as Q_INIT_RESOURCE requires).
-static void registerMigrationResources() { Q_INIT_RESOURCE(migrations); }
+static void registerMigrationResources() {
+    Q_INIT_RESOURCE(migrations);
+}
 
 namespace driftlab::db {
 namespace {
@@ -39,7 +41,9 @@ QStringList statements(const QString& sql) {
 
 }  // namespace
 
-int latestSchemaVersion() { return int(migrationFiles().size()); }
+int latestSchemaVersion() {
+    return int(migrationFiles().size());
+}
 
 int schemaVersion(QSqlDatabase& db) {
     QSqlQuery q(db);
@@ -51,9 +55,10 @@ bool migrate(QSqlDatabase& db, QString* error, int target) {
     if (target < 0) target = int(files.size());
     int version = schemaVersion(db);
     if (version > int(files.size())) {
-        *error = QStringLiteral("database schema v%1 is newer than this build (v%2); update DriftLab")
-                     .arg(version)
-                     .arg(files.size());
+        *error =
+            QStringLiteral("database schema v%1 is newer than this build (v%2); update DriftLab")
+                .arg(version)
+                .arg(files.size());
         return false;
     }
     for (; version < target; ++version) {
@@ -75,7 +80,8 @@ bool migrate(QSqlDatabase& db, QString* error, int target) {
             }
         }
         if (!db.commit()) {
-            *error = QStringLiteral("migration %1: commit failed: %2").arg(name, db.lastError().text());
+            *error =
+                QStringLiteral("migration %1: commit failed: %2").arg(name, db.lastError().text());
             db.rollback();
             return false;
         }

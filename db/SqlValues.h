@@ -15,7 +15,9 @@ inline std::optional<double> optionalDouble(const QVariant& v) {
     return v.isNull() ? std::nullopt : std::optional<double>(v.toDouble());
 }
 /// Qt binds a null QString as SQL NULL; text columns here are NOT NULL.
-inline QString text(const QString& s) { return s.isNull() ? QStringLiteral("") : s; }
+inline QString text(const QString& s) {
+    return s.isNull() ? QStringLiteral("") : s;
+}
 inline QString jsonText(const QJsonObject& o) {
     return QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact));
 }

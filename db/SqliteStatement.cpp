@@ -16,10 +16,13 @@ SqliteStatement::SqliteStatement(sqlite3* handle, const char* sql) : m_handle(ha
         m_statement = nullptr;
 }
 
-SqliteStatement::~SqliteStatement() { sqlite3_finalize(m_statement); }
+SqliteStatement::~SqliteStatement() {
+    sqlite3_finalize(m_statement);
+}
 
 QString SqliteStatement::error() const {
-    return m_handle ? QString::fromUtf8(sqlite3_errmsg(m_handle)) : QStringLiteral("no SQLite handle");
+    return m_handle ? QString::fromUtf8(sqlite3_errmsg(m_handle))
+                    : QStringLiteral("no SQLite handle");
 }
 
 bool SqliteStatement::execute() {

@@ -3,9 +3,9 @@
 // hot paths (bulk sample insert and load) where QVariant binding per value
 // costs more than SQLite itself. Everything else goes through QSqlQuery.
 
+#include <sqlite3.h>
 #include <QSqlDatabase>
 #include <QString>
-#include <sqlite3.h>
 
 namespace driftlab::db {
 

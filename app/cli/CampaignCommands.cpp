@@ -8,7 +8,8 @@
 namespace driftlab::cli {
 namespace {
 
-const QCommandLineOption kDbOption{QStringLiteral("db"), QStringLiteral("Campaign database (SQLite file)."),
+const QCommandLineOption kDbOption{QStringLiteral("db"),
+                                   QStringLiteral("Campaign database (SQLite file)."),
                                    QStringLiteral("FILE")};
 
 std::unique_ptr<db::CampaignStore> openStore(const QCommandLineParser& parser) {
@@ -24,13 +25,14 @@ std::unique_ptr<db::CampaignStore> openStore(const QCommandLineParser& parser) {
 int importCommand(const QStringList& args) {
     QCommandLineParser parser;
     parseArguments(parser, args, {kDbOption}, QStringLiteral("BUNDLE"));
-    if (parser.positionalArguments().size() != 1) throw CliError(QStringLiteral("give one BUNDLE folder"), 2);
+    if (parser.positionalArguments().size() != 1)
+        throw CliError(QStringLiteral("give one BUNDLE folder"), 2);
     auto store = openStore(parser);
     // Read (and validate) the whole bundle before touching the database.
     const Campaign campaign = readBundleOrFail(parser.positionalArguments().front());
     QString error;
-    auto id = store->importCampaign(campaign, &error,
-                                    [](double f) { return printProgress(QStringLiteral("importing"), f); });
+    auto id = store->importCampaign(
+        campaign, &error, [](double f) { return printProgress(QStringLiteral("importing"), f); });
     if (!id) throw CliError(error);
     if (parser.isSet(QStringLiteral("json")))
         printJson({{QStringLiteral("campaign"), *id}, {QStringLiteral("name"), campaign.name}});
@@ -41,7 +43,8 @@ int importCommand(const QStringList& args) {
 
 int exportCommand(const QStringList& args) {
     QCommandLineParser parser;
-    const QCommandLineOption out{QStringLiteral("out"), QStringLiteral("Bundle folder to write."), QStringLiteral("DIR")};
+    const QCommandLineOption out{QStringLiteral("out"), QStringLiteral("Bundle folder to write."),
+                                 QStringLiteral("DIR")};
     parseArguments(parser, args, campaignSourceOptions() << out);
     if (!parser.isSet(QStringLiteral("db")) || !parser.isSet(out))
         throw CliError(QStringLiteral("export needs --db FILE --campaign ID --out DIR"), 2);
@@ -49,7 +52,8 @@ int exportCommand(const QStringList& args) {
     if (auto error = writeBundle(campaign, parser.value(out)))
         throw CliError(parser.value(out) + QLatin1Char('/') + error->toString());
     if (parser.isSet(QStringLiteral("json")))
-        printJson({{QStringLiteral("out"), parser.value(out)}, {QStringLiteral("name"), campaign.name}});
+        printJson(
+            {{QStringLiteral("out"), parser.value(out)}, {QStringLiteral("name"), campaign.name}});
     else
         printLine(parser.value(out));
     return 0;
@@ -62,14 +66,16 @@ int infoCommand(const QStringList& args) {
 
     QJsonArray runs, channels;
     for (const Run& run : c.runs)
-        runs.append(QJsonObject{{QStringLiteral("id"), run.id},
-                                {QStringLiteral("kind"), toString(run.kind)},
-                                {QStringLiteral("samples"), qint64(run.samples.presentValueCount())},
-                                {QStringLiteral("sample_times"), qint64(run.samples.rowCount())},
-                                {QStringLiteral("positioning"), qint64(run.positioning.size())},
-                                {QStringLiteral("motion_segments"), qint64(run.motion.size())},
-                                {QStringLiteral("duration_s"),
-                                 run.samples.rowCount() ? run.samples.time_s.back() - run.samples.time_s.front() : 0.0}});
+        runs.append(QJsonObject{
+            {QStringLiteral("id"), run.id},
+            {QStringLiteral("kind"), toString(run.kind)},
+            {QStringLiteral("samples"), qint64(run.samples.presentValueCount())},
+            {QStringLiteral("sample_times"), qint64(run.samples.rowCount())},
+            {QStringLiteral("positioning"), qint64(run.positioning.size())},
+            {QStringLiteral("motion_segments"), qint64(run.motion.size())},
+            {QStringLiteral("duration_s"),
+             run.samples.rowCount() ? run.samples.time_s.back() - run.samples.time_s.front()
+                                    : 0.0}});
     for (const Channel& ch : c.channels)
         channels.append(QJsonObject{{QStringLiteral("id"), ch.id},
                                     {QStringLiteral("quantity"), toString(ch.quantity)},
@@ -92,12 +98,14 @@ int infoCommand(const QStringList& args) {
                       .arg(c.screw->mounting));
     printLine(QStringLiteral("channels:"));
     for (const Channel& ch : c.channels)
-        printLine(QStringLiteral("  %1  %2 (%3) %4").arg(ch.id, -18).arg(toString(ch.quantity), toString(ch.role),
-                                                                       unitOf(ch.quantity)));
+        printLine(QStringLiteral("  %1  %2 (%3) %4")
+                      .arg(ch.id, -18)
+                      .arg(toString(ch.quantity), toString(ch.role), unitOf(ch.quantity)));
     printLine(QStringLiteral("runs:"));
     for (const QJsonValue& v : runs) {
         const QJsonObject r = v.toObject();
-        printLine(QStringLiteral("  %1  %2  %3 samples at %4 times over %5 s, %6 positioning readings, %7 motion segments")
+        printLine(QStringLiteral("  %1  %2  %3 samples at %4 times over %5 s, %6 positioning "
+                                 "readings, %7 motion segments")
                       .arg(r[QStringLiteral("id")].toString(), -6)
                       .arg(r[QStringLiteral("kind")].toString(), -11)
                       .arg(r[QStringLiteral("samples")].toInteger())

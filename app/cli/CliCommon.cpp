@@ -12,7 +12,8 @@ namespace driftlab::cli {
 void parseArguments(QCommandLineParser& parser, const QStringList& args,
                     const QList<QCommandLineOption>& options, const QString& positional) {
     parser.addHelpOption();
-    parser.addOption({QStringLiteral("json"), QStringLiteral("Print the result as JSON on stdout.")});
+    parser.addOption(
+        {QStringLiteral("json"), QStringLiteral("Print the result as JSON on stdout.")});
     parser.addOptions(options);
     if (!positional.isEmpty()) parser.addPositionalArgument(positional, positional);
     if (!parser.parse(args)) throw CliError(parser.errorText(), 2);
@@ -23,8 +24,10 @@ void parseArguments(QCommandLineParser& parser, const QStringList& args,
 }
 
 QList<QCommandLineOption> campaignSourceOptions() {
-    return {{QStringLiteral("db"), QStringLiteral("Campaign database (SQLite file)."), QStringLiteral("FILE")},
-            {QStringLiteral("campaign"), QStringLiteral("Campaign id in the database."), QStringLiteral("ID")}};
+    return {{QStringLiteral("db"), QStringLiteral("Campaign database (SQLite file)."),
+             QStringLiteral("FILE")},
+            {QStringLiteral("campaign"), QStringLiteral("Campaign id in the database."),
+             QStringLiteral("ID")}};
 }
 
 Campaign loadCampaignSource(const QCommandLineParser& parser) {
@@ -40,7 +43,8 @@ Campaign loadCampaignSource(const QCommandLineParser& parser) {
         if (!campaign) throw CliError(error);
         return *campaign;
     }
-    if (positional.size() != 1) throw CliError(QStringLiteral("give a BUNDLE folder or --db FILE --campaign ID"), 2);
+    if (positional.size() != 1)
+        throw CliError(QStringLiteral("give a BUNDLE folder or --db FILE --campaign ID"), 2);
     return readBundleOrFail(positional.front());
 }
 
@@ -48,7 +52,8 @@ Campaign readBundleOrFail(const QString& path) {
     BundleReadOptions options;
     options.progress = [](double f) { return printProgress(QStringLiteral("reading bundle"), f); };
     BundleReadResult result = readBundle(path, options);
-    for (const QString& warning : result.warnings) std::fprintf(stderr, "warning: %s\n", qPrintable(warning));
+    for (const QString& warning : result.warnings)
+        std::fprintf(stderr, "warning: %s\n", qPrintable(warning));
     if (!result.ok()) {
         // Name the file by its full path so the user can open it at that line.
         BundleError e = *result.error;

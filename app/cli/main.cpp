@@ -18,14 +18,19 @@ int main(int argc, char** argv) {
     QCoreApplication::setApplicationName(QStringLiteral("driftlab-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIFTLAB_VERSION));
     using namespace driftlab::cli;
-    const std::map<QString, std::pair<std::function<int(const QStringList&)>, const char*>> commands{
-        {QStringLiteral("import"), {importCommand, "import BUNDLE --db FILE     store a bundle (one transaction)"}},
-        {QStringLiteral("export"), {exportCommand, "export --db FILE --campaign ID --out DIR   write a bundle back"}},
-        {QStringLiteral("info"), {infoCommand, "info BUNDLE                 runs, channels, counts"}},
-    };
+    const std::map<QString, std::pair<std::function<int(const QStringList&)>, const char*>>
+        commands{
+            {QStringLiteral("import"),
+             {importCommand, "import BUNDLE --db FILE     store a bundle (one transaction)"}},
+            {QStringLiteral("export"),
+             {exportCommand, "export --db FILE --campaign ID --out DIR   write a bundle back"}},
+            {QStringLiteral("info"),
+             {infoCommand, "info BUNDLE                 runs, channels, counts"}},
+        };
     QStringList args = app.arguments();
     if (args.size() < 2 || !commands.count(args[1])) {
-        std::fprintf(stderr, "usage: driftlab-cli COMMAND [options]  (COMMAND --help for its options)\n");
+        std::fprintf(stderr,
+                     "usage: driftlab-cli COMMAND [options]  (COMMAND --help for its options)\n");
         for (const auto& [name, command] : commands) std::fprintf(stderr, "  %s\n", command.second);
         return args.size() >= 2 && args[1] == QLatin1String("--help") ? 0 : 2;
     }
@@ -33,7 +38,8 @@ int main(int argc, char** argv) {
         return commands.at(args[1]).first(args.mid(1));
     } catch (const CliError& e) {
         endProgressLine();
-        if (e.exitCode != 0) std::fprintf(stderr, "driftlab-cli %s: %s\n", qPrintable(args[1]), e.what());
+        if (e.exitCode != 0)
+            std::fprintf(stderr, "driftlab-cli %s: %s\n", qPrintable(args[1]), e.what());
         return e.exitCode;
     }
 }

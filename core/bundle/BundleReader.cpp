@@ -28,10 +28,12 @@ public:
     Campaign parse() {
         QFile json(m_dir.filePath(kCampaignFile));
         if (!json.open(QIODevice::ReadOnly))
-            throw BundleException({kCampaignFile, 0, 0,
-                                   QStringLiteral("cannot open in '%1': %2").arg(m_dir.path(), json.errorString())});
+            throw BundleException(
+                {kCampaignFile, 0, 0,
+                 QStringLiteral("cannot open in '%1': %2").arg(m_dir.path(), json.errorString())});
         m_campaign = campaignFromJson(json.readAll(), kCampaignFile);
-        for (std::size_t i = 0; i < m_campaign.runs.size(); ++i) m_runIndex.insert(m_campaign.runs[i].id, int(i));
+        for (std::size_t i = 0; i < m_campaign.runs.size(); ++i)
+            m_runIndex.insert(m_campaign.runs[i].id, int(i));
 
         readSamples();
         if (m_dir.exists(kMotionFile)) readMotion();
@@ -46,7 +48,9 @@ private:
     Run& runOf(const CsvTable& csv, int column) {
         auto it = m_runIndex.find(csv.text(column));
         if (it == m_runIndex.end())
-            csv.fail(column, QStringLiteral("unknown run id '%1' (not in campaign.json)").arg(csv.text(column)));
+            csv.fail(
+                column,
+                QStringLiteral("unknown run id '%1' (not in campaign.json)").arg(csv.text(column)));
         return m_campaign.runs[std::size_t(*it)];
     }
 
@@ -64,7 +68,8 @@ private:
 
     void reportProgress(const CsvTable& csv, double begin, double span) {
         if (m_options.progress && !m_options.progress(begin + span * csv.progress()))
-            throw BundleException({csv.fileName(), csv.line(), 0, QStringLiteral("import cancelled")});
+            throw BundleException(
+                {csv.fileName(), csv.line(), 0, QStringLiteral("import cancelled")});
     }
 
     void readSamples() {
@@ -93,14 +98,17 @@ private:
             SampleSeries& s = run.samples;
             double t = csv.number(timeCol);
             if (!s.time_s.empty() && t <= s.time_s.back())
-                csv.fail(timeCol, QStringLiteral("time goes backwards or repeats in run '%1' (%2 s after %3 s)")
-                                      .arg(run.id)
-                                      .arg(t)
-                                      .arg(s.time_s.back()));
+                csv.fail(
+                    timeCol,
+                    QStringLiteral("time goes backwards or repeats in run '%1' (%2 s after %3 s)")
+                        .arg(run.id)
+                        .arg(t)
+                        .arg(s.time_s.back()));
             bool anyValue = false;
             for (std::size_t k = 0; k < dataCols.size(); ++k) {
                 double v = csv.numberOrMissing(dataCols[k]);
-                if (dataCols[k] == positionCol && !std::isnan(v)) checkInTravel(csv, dataCols[k], v);
+                if (dataCols[k] == positionCol && !std::isnan(v))
+                    checkInTravel(csv, dataCols[k], v);
                 anyValue = anyValue || !std::isnan(v);
                 s.values[k].push_back(v);
             }
@@ -122,21 +130,25 @@ private:
 
     void readMotion() {
         CsvTable csv(m_dir.filePath(kMotionFile), kMotionFile);
-        const QStringList expected{QStringLiteral("run"), QStringLiteral("start_s"), QStringLiteral("end_s"),
-                                   QStringLiteral("from_mm"), QStringLiteral("to_mm"), QStringLiteral("feed_mm_min")};
+        const QStringList expected{QStringLiteral("run"),   QStringLiteral("start_s"),
+                                   QStringLiteral("end_s"), QStringLiteral("from_mm"),
+                                   QStringLiteral("to_mm"), QStringLiteral("feed_mm_min")};
         const std::vector<int> c = requireExactly(csv, expected);
         while (csv.next()) {
             Run& run = runOf(csv, c[0]);
             MotionSegment m{csv.number(c[1]), csv.number(c[2]), csv.number(c[3]), csv.number(c[4]),
                             csv.number(c[5])};
             if (m.end_s < m.start_s)
-                csv.fail(c[2], QStringLiteral("segment ends (%1 s) before it starts (%2 s)").arg(m.end_s).arg(m.start_s));
+                csv.fail(c[2], QStringLiteral("segment ends (%1 s) before it starts (%2 s)")
+                                   .arg(m.end_s)
+                                   .arg(m.start_s));
             if (!run.motion.empty() && m.start_s < run.motion.back().end_s)
-                csv.fail(c[1], QStringLiteral("time goes backwards in run '%1': segment starts at %2 s, "
-                                              "before the previous one ends (%3 s)")
-                                   .arg(run.id)
-                                   .arg(m.start_s)
-                                   .arg(run.motion.back().end_s));
+                csv.fail(c[1],
+                         QStringLiteral("time goes backwards in run '%1': segment starts at %2 s, "
+                                        "before the previous one ends (%3 s)")
+                             .arg(run.id)
+                             .arg(m.start_s)
+                             .arg(run.motion.back().end_s));
             checkInTravel(csv, c[3], m.from_mm);
             checkInTravel(csv, c[4], m.to_mm);
             run.motion.push_back(m);
@@ -146,9 +158,9 @@ private:
 
     void readPositioning() {
         CsvTable csv(m_dir.filePath(kPositioningFile), kPositioningFile);
-        const QStringList expected{QStringLiteral("run"), QStringLiteral("time_s"), QStringLiteral("cycle"),
-                                   QStringLiteral("target_mm"), QStringLiteral("direction"),
-                                   QStringLiteral("deviation_um")};
+        const QStringList expected{QStringLiteral("run"),       QStringLiteral("time_s"),
+                                   QStringLiteral("cycle"),     QStringLiteral("target_mm"),
+                                   QStringLiteral("direction"), QStringLiteral("deviation_um")};
         const std::vector<int> c = requireExactly(csv, expected);
         while (csv.next()) {
             Run& run = runOf(csv, c[0]);
@@ -169,7 +181,8 @@ private:
             else if (direction == QLatin1String("-"))
                 p.direction = Direction::Negative;
             else
-                csv.fail(c[4], QStringLiteral("direction must be + or -, found '%1'").arg(direction));
+                csv.fail(c[4],
+                         QStringLiteral("direction must be + or -, found '%1'").arg(direction));
             p.deviation_um = csv.number(c[5]);
             run.positioning.push_back(p);
         }
@@ -202,11 +215,12 @@ private:
             auto mid = present.begin() + std::ptrdiff_t(present.size() / 2);
             std::nth_element(present.begin(), mid, present.end());
             if (*mid > 200.0)
-                throw BundleException({kSamplesFile, 1, m_sampleHeaderColumns[k] + 1,
-                                       QStringLiteral("temperature channel '%1' reads %2 in the median: "
-                                                      "that looks like kelvin, DriftLab expects °C")
-                                           .arg(ch->id)
-                                           .arg(*mid)});
+                throw BundleException(
+                    {kSamplesFile, 1, m_sampleHeaderColumns[k] + 1,
+                     QStringLiteral("temperature channel '%1' reads %2 in the median: "
+                                    "that looks like kelvin, DriftLab expects °C")
+                         .arg(ch->id)
+                         .arg(*mid)});
         }
     }
 

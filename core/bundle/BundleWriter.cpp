@@ -94,7 +94,8 @@ std::optional<BundleError> writeBundle(const Campaign& campaign, const QString& 
     if (hasMotion)
         if (auto e = save(dir, QStringLiteral("motion.csv"), motionCsv(campaign))) return e;
     if (hasPositioning)
-        if (auto e = save(dir, QStringLiteral("positioning.csv"), positioningCsv(campaign))) return e;
+        if (auto e = save(dir, QStringLiteral("positioning.csv"), positioningCsv(campaign)))
+            return e;
     return std::nullopt;
 }
 

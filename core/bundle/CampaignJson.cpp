@@ -31,7 +31,9 @@ public:
     QString string(const QString& key, bool required) {
         QJsonValue v = take(key);
         if (v.isUndefined() && !required) return {};
-        if (!v.isString()) fail(key, v.isUndefined() ? QStringLiteral("missing") : QStringLiteral("expected a string"));
+        if (!v.isString())
+            fail(key,
+                 v.isUndefined() ? QStringLiteral("missing") : QStringLiteral("expected a string"));
         return v.toString();
     }
     std::optional<double> optionalNumber(const QString& key) {
@@ -66,12 +68,16 @@ public:
     }
     ObjectReader object(const QString& key) {
         QJsonValue v = take(key);
-        if (!v.isObject()) fail(key, v.isUndefined() ? QStringLiteral("missing") : QStringLiteral("expected an object"));
+        if (!v.isObject())
+            fail(key, v.isUndefined() ? QStringLiteral("missing")
+                                      : QStringLiteral("expected an object"));
         return ObjectReader(v.toObject(), keyPath(key), m_file);
     }
     QJsonArray array(const QString& key) {
         QJsonValue v = take(key);
-        if (!v.isArray()) fail(key, v.isUndefined() ? QStringLiteral("missing") : QStringLiteral("expected an array"));
+        if (!v.isArray())
+            fail(key,
+                 v.isUndefined() ? QStringLiteral("missing") : QStringLiteral("expected an array"));
         return v.toArray();
     }
     QJsonObject rest() const {
@@ -88,7 +94,8 @@ private:
     QSet<QString> m_used;
 };
 
-ObjectReader elementReader(const QJsonArray& array, int i, const QString& name, const QString& file) {
+ObjectReader elementReader(const QJsonArray& array, int i, const QString& name,
+                           const QString& file) {
     QString path = QStringLiteral("%1[%2]").arg(name).arg(i);
     if (!array[i].isObject())
         throw BundleException({file, 0, 0, path + QStringLiteral(": expected an object")});
@@ -103,11 +110,13 @@ Screw readScrew(ObjectReader r) {
     s.fixed_end_mm = r.number(QStringLiteral("fixed_end_mm"));
     s.mounting = r.string(QStringLiteral("mounting"), false);
     if (s.mounting.isEmpty()) s.mounting = QStringLiteral("fixed-free");
-    static const QStringList mountings{QStringLiteral("fixed-free"), QStringLiteral("fixed-supported"),
+    static const QStringList mountings{QStringLiteral("fixed-free"),
+                                       QStringLiteral("fixed-supported"),
                                        QStringLiteral("fixed-fixed")};
     if (!mountings.contains(s.mounting))
-        r.fail(QStringLiteral("mounting"), QStringLiteral("unknown mounting '%1' (expected %2)")
-                                               .arg(s.mounting, mountings.join(QStringLiteral(", "))));
+        r.fail(QStringLiteral("mounting"),
+               QStringLiteral("unknown mounting '%1' (expected %2)")
+                   .arg(s.mounting, mountings.join(QStringLiteral(", "))));
     s.alpha_per_K = r.positiveOr(QStringLiteral("alpha_per_K"), s.alpha_per_K);
     if (s.alpha_per_K > 1e-3)
         r.fail(QStringLiteral("alpha_per_K"),
@@ -115,7 +124,8 @@ Screw readScrew(ObjectReader r) {
                               "(steel: 11.5e-6), not in ppm or µm/m")
                    .arg(s.alpha_per_K));
     s.density_kg_m3 = r.positiveOr(QStringLiteral("density_kg_m3"), s.density_kg_m3);
-    s.specific_heat_J_kgK = r.positiveOr(QStringLiteral("specific_heat_J_kgK"), s.specific_heat_J_kgK);
+    s.specific_heat_J_kgK =
+        r.positiveOr(QStringLiteral("specific_heat_J_kgK"), s.specific_heat_J_kgK);
     s.conductivity_W_mK = r.positiveOr(QStringLiteral("conductivity_W_mK"), s.conductivity_W_mK);
     s.extra = r.rest();
     return s;
@@ -126,9 +136,10 @@ Channel readChannel(ObjectReader r) {
     c.id = r.string(QStringLiteral("id"), true);
     if (!isValidIdentifier(c.id) || isAxisColumn(c.id) || c.id == QLatin1String("run") ||
         c.id == QLatin1String("time_s"))
-        r.fail(QStringLiteral("id"), QStringLiteral("'%1' is not a valid channel id ([A-Za-z0-9_]+, "
-                                                    "not run, time_s or an axis column)")
-                                         .arg(c.id));
+        r.fail(QStringLiteral("id"),
+               QStringLiteral("'%1' is not a valid channel id ([A-Za-z0-9_]+, "
+                              "not run, time_s or an axis column)")
+                   .arg(c.id));
     QString quantity = r.string(QStringLiteral("quantity"), true);
     auto q = quantityFromString(quantity);
     if (!q)
@@ -152,13 +163,15 @@ Run readRun(ObjectReader r) {
     Run run;
     run.id = r.string(QStringLiteral("id"), true);
     if (!isValidIdentifier(run.id))
-        r.fail(QStringLiteral("id"), QStringLiteral("'%1' is not a valid run id ([A-Za-z0-9_]+)").arg(run.id));
+        r.fail(QStringLiteral("id"),
+               QStringLiteral("'%1' is not a valid run id ([A-Za-z0-9_]+)").arg(run.id));
     QString kind = r.string(QStringLiteral("kind"), true);
     auto k = runKindFromString(kind);
     if (!k)
-        r.fail(QStringLiteral("kind"),
-               QStringLiteral("unknown run kind '%1' (expected moving, spindle, etve or positioning)")
-                   .arg(kind));
+        r.fail(
+            QStringLiteral("kind"),
+            QStringLiteral("unknown run kind '%1' (expected moving, spindle, etve or positioning)")
+                .arg(kind));
     run.kind = *k;
     run.feed_mm_min = r.optionalNumber(QStringLiteral("feed_mm_min"));
     run.range_mm = r.optionalRange(QStringLiteral("range_mm"));
@@ -178,14 +191,16 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName) {
         int column = int(parseError.offset - (before.lastIndexOf('\n') + 1)) + 1;
         throw BundleException({fileName, line, column, parseError.errorString()});
     }
-    if (!doc.isObject()) throw BundleException({fileName, 1, 1, QStringLiteral("expected a JSON object")});
+    if (!doc.isObject())
+        throw BundleException({fileName, 1, 1, QStringLiteral("expected a JSON object")});
 
     ObjectReader r(doc.object(), QString(), fileName);
     Campaign c;
     QString format = r.string(QStringLiteral("format"), true);
     if (format != kCampaignFormat)
-        r.fail(QStringLiteral("format"),
-               QStringLiteral("unsupported format '%1' (expected %2)").arg(format, kCampaignFormat));
+        r.fail(
+            QStringLiteral("format"),
+            QStringLiteral("unsupported format '%1' (expected %2)").arg(format, kCampaignFormat));
     c.name = r.string(QStringLiteral("name"), true);
 
     ObjectReader machine = r.object(QStringLiteral("machine"));
@@ -206,7 +221,8 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName) {
             i.fail(QStringLiteral("dead_path_mm"), QStringLiteral("must not be negative"));
         QJsonValue comp = i.take(QStringLiteral("environment_compensation"));
         if (!comp.isUndefined() && !comp.isBool())
-            i.fail(QStringLiteral("environment_compensation"), QStringLiteral("expected true or false"));
+            i.fail(QStringLiteral("environment_compensation"),
+                   QStringLiteral("expected true or false"));
         interferometer.environment_compensation = comp.toBool(true);
         interferometer.extra = i.rest();
         c.interferometer = interferometer;
@@ -216,20 +232,23 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName) {
     for (int i = 0; i < channels.size(); ++i) {
         Channel ch = readChannel(elementReader(channels, i, QStringLiteral("channels"), fileName));
         if (c.findChannel(ch.id))
-            throw BundleException({fileName, 0, 0,
-                                   QStringLiteral("channels[%1].id: duplicate channel id '%2'").arg(i).arg(ch.id)});
+            throw BundleException(
+                {fileName, 0, 0,
+                 QStringLiteral("channels[%1].id: duplicate channel id '%2'").arg(i).arg(ch.id)});
         c.channels.push_back(std::move(ch));
     }
     QJsonArray runs = r.array(QStringLiteral("runs"));
     for (int i = 0; i < runs.size(); ++i) {
         Run run = readRun(elementReader(runs, i, QStringLiteral("runs"), fileName));
         if (c.findRun(run.id))
-            throw BundleException({fileName, 0, 0,
-                                   QStringLiteral("runs[%1].id: duplicate run id '%2'").arg(i).arg(run.id)});
+            throw BundleException(
+                {fileName, 0, 0,
+                 QStringLiteral("runs[%1].id: duplicate run id '%2'").arg(i).arg(run.id)});
         if (isFeedAxisRun(run.kind) && (!c.screw || !c.nut_length_mm))
             throw BundleException(
                 {fileName, 0, 0,
-                 QStringLiteral("runs[%1]: a %2 run needs 'screw' and 'nut_length_mm' in the campaign")
+                 QStringLiteral(
+                     "runs[%1]: a %2 run needs 'screw' and 'nut_length_mm' in the campaign")
                      .arg(i)
                      .arg(toString(run.kind))});
         c.runs.push_back(std::move(run));
@@ -250,30 +269,31 @@ QJsonObject campaignToJson(const Campaign& c) {
     o[QStringLiteral("name")] = c.name;
     QJsonObject machine{{QStringLiteral("name"), c.machine.name}};
     if (!c.machine.axis.isEmpty()) machine[QStringLiteral("axis")] = c.machine.axis;
-    if (!c.machine.controller.isEmpty()) machine[QStringLiteral("controller")] = c.machine.controller;
+    if (!c.machine.controller.isEmpty())
+        machine[QStringLiteral("controller")] = c.machine.controller;
     o[QStringLiteral("machine")] = merged(machine, c.machine.extra);
     if (c.screw) {
         const Screw& s = *c.screw;
-        o[QStringLiteral("screw")] = merged(
-            QJsonObject{{QStringLiteral("length_mm"), s.length_mm},
-                        {QStringLiteral("diameter_mm"), s.diameter_mm},
-                        {QStringLiteral("lead_mm"), s.lead_mm},
-                        {QStringLiteral("fixed_end_mm"), s.fixed_end_mm},
-                        {QStringLiteral("mounting"), s.mounting},
-                        {QStringLiteral("alpha_per_K"), s.alpha_per_K},
-                        {QStringLiteral("density_kg_m3"), s.density_kg_m3},
-                        {QStringLiteral("specific_heat_J_kgK"), s.specific_heat_J_kgK},
-                        {QStringLiteral("conductivity_W_mK"), s.conductivity_W_mK}},
-            s.extra);
+        o[QStringLiteral("screw")] =
+            merged(QJsonObject{{QStringLiteral("length_mm"), s.length_mm},
+                               {QStringLiteral("diameter_mm"), s.diameter_mm},
+                               {QStringLiteral("lead_mm"), s.lead_mm},
+                               {QStringLiteral("fixed_end_mm"), s.fixed_end_mm},
+                               {QStringLiteral("mounting"), s.mounting},
+                               {QStringLiteral("alpha_per_K"), s.alpha_per_K},
+                               {QStringLiteral("density_kg_m3"), s.density_kg_m3},
+                               {QStringLiteral("specific_heat_J_kgK"), s.specific_heat_J_kgK},
+                               {QStringLiteral("conductivity_W_mK"), s.conductivity_W_mK}},
+                   s.extra);
     }
     if (c.nut_length_mm) o[QStringLiteral("nut_length_mm")] = *c.nut_length_mm;
     if (c.travel_mm) o[QStringLiteral("travel_mm")] = range(*c.travel_mm);
     if (c.interferometer)
-        o[QStringLiteral("interferometer")] = merged(
-            QJsonObject{{QStringLiteral("dead_path_mm"), c.interferometer->dead_path_mm},
-                        {QStringLiteral("environment_compensation"),
-                         c.interferometer->environment_compensation}},
-            c.interferometer->extra);
+        o[QStringLiteral("interferometer")] =
+            merged(QJsonObject{{QStringLiteral("dead_path_mm"), c.interferometer->dead_path_mm},
+                               {QStringLiteral("environment_compensation"),
+                                c.interferometer->environment_compensation}},
+                   c.interferometer->extra);
 
     QJsonArray channels;
     for (const Channel& ch : c.channels) {

@@ -2,8 +2,8 @@
 
 #include <QFile>
 #include <charconv>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace driftlab {
@@ -25,7 +25,8 @@ QString quoted(std::string_view s) {
 CsvTable::CsvTable(const QString& path, const QString& displayName) : m_fileName(displayName) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        throw BundleException({m_fileName, 0, 0, QStringLiteral("cannot open: ") + file.errorString()});
+        throw BundleException(
+            {m_fileName, 0, 0, QStringLiteral("cannot open: ") + file.errorString()});
     m_data = file.readAll();
     if (m_data.startsWith("\xEF\xBB\xBF")) m_pos = 3;  // UTF-8 byte-order mark
 
@@ -45,7 +46,8 @@ CsvTable::CsvTable(const QString& path, const QString& displayName) : m_fileName
         }
         return;
     }
-    throw BundleException({m_fileName, 0, 0, QStringLiteral("missing header line (file is empty)")});
+    throw BundleException(
+        {m_fileName, 0, 0, QStringLiteral("missing header line (file is empty)")});
 }
 
 int CsvTable::column(const QString& name) const {
@@ -57,16 +59,16 @@ int CsvTable::column(const QString& name) const {
 int CsvTable::requireColumn(const QString& name) const {
     int c = column(name);
     if (c < 0)
-        throw BundleException({m_fileName, 1, 0,
-                               QStringLiteral("missing column '%1' in header").arg(name)});
+        throw BundleException(
+            {m_fileName, 1, 0, QStringLiteral("missing column '%1' in header").arg(name)});
     return c;
 }
 
 bool CsvTable::readLine(std::string_view& line) {
     if (m_pos >= m_data.size()) return false;
     const char* begin = m_data.constData() + m_pos;
-    const char* end = static_cast<const char*>(
-        std::memchr(begin, '\n', std::size_t(m_data.size() - m_pos)));
+    const char* end =
+        static_cast<const char*>(std::memchr(begin, '\n', std::size_t(m_data.size() - m_pos)));
     qsizetype length = end ? end - begin : m_data.size() - m_pos;
     line = std::string_view(begin, std::size_t(length));
     m_pos += length + (end ? 1 : 0);
@@ -107,7 +109,8 @@ bool CsvTable::next() {
 
 double CsvTable::number(int column) const {
     std::string_view cell = field(column);
-    if (cell.empty()) fail(column, QStringLiteral("empty cell in column '%1'").arg(m_header[column]));
+    if (cell.empty())
+        fail(column, QStringLiteral("empty cell in column '%1'").arg(m_header[column]));
     return numberOrMissing(column);
 }
 

@@ -47,16 +47,27 @@ std::optional<Enum> valueOf(const std::array<std::pair<Enum, const char*>, N>& t
 
 }  // namespace
 
-QString toString(Quantity quantity) { return nameOf(kQuantities, quantity); }
-QString toString(ChannelRole role) { return nameOf(kRoles, role); }
-std::optional<Quantity> quantityFromString(const QString& text) { return valueOf(kQuantities, text); }
-std::optional<ChannelRole> roleFromString(const QString& text) { return valueOf(kRoles, text); }
+QString toString(Quantity quantity) {
+    return nameOf(kQuantities, quantity);
+}
+QString toString(ChannelRole role) {
+    return nameOf(kRoles, role);
+}
+std::optional<Quantity> quantityFromString(const QString& text) {
+    return valueOf(kQuantities, text);
+}
+std::optional<ChannelRole> roleFromString(const QString& text) {
+    return valueOf(kRoles, text);
+}
 
 QString unitOf(Quantity quantity) {
     switch (quantity) {
-        case Quantity::Temperature: return QStringLiteral("°C");
-        case Quantity::Displacement: return QStringLiteral("µm");
-        case Quantity::Speed: return QStringLiteral("rpm");
+        case Quantity::Temperature:
+            return QStringLiteral("°C");
+        case Quantity::Displacement:
+            return QStringLiteral("µm");
+        case Quantity::Speed:
+            return QStringLiteral("rpm");
     }
     return {};
 }

@@ -13,9 +13,21 @@ enum class Quantity { Temperature, Displacement, Speed };
 
 enum class ChannelRole {
     // temperature
-    Nut, Bearing, Ambient, Air, Structure, Motor, Spindle, Other,
+    Nut,
+    Bearing,
+    Ambient,
+    Air,
+    Structure,
+    Motor,
+    Spindle,
+    Other,
     // displacement (drift probes of a spindle or ETVE test)
-    DriftX, DriftY, DriftZ, TiltA, TiltB, Drift,
+    DriftX,
+    DriftY,
+    DriftZ,
+    TiltA,
+    TiltB,
+    Drift,
 };
 
 QString toString(Quantity quantity);

@@ -7,10 +7,14 @@ namespace driftlab {
 
 QString toString(RunKind kind) {
     switch (kind) {
-        case RunKind::Moving: return QStringLiteral("moving");
-        case RunKind::Spindle: return QStringLiteral("spindle");
-        case RunKind::Etve: return QStringLiteral("etve");
-        case RunKind::Positioning: return QStringLiteral("positioning");
+        case RunKind::Moving:
+            return QStringLiteral("moving");
+        case RunKind::Spindle:
+            return QStringLiteral("spindle");
+        case RunKind::Etve:
+            return QStringLiteral("etve");
+        case RunKind::Positioning:
+            return QStringLiteral("positioning");
     }
     return {};
 }
@@ -21,7 +25,9 @@ std::optional<RunKind> runKindFromString(const QString& text) {
     return std::nullopt;
 }
 
-bool isFeedAxisRun(RunKind kind) { return kind == RunKind::Moving || kind == RunKind::Positioning; }
+bool isFeedAxisRun(RunKind kind) {
+    return kind == RunKind::Moving || kind == RunKind::Positioning;
+}
 
 int SampleSeries::columnIndex(const QString& column) const {
     auto it = std::find(columns.begin(), columns.end(), column);

@@ -1,12 +1,12 @@
 // Import throughput: a one-million-sample bundle read from disk and stored in
 // one SQLite transaction (what `driftlab-cli import` does).
-#include <QTemporaryDir>
 #include <benchmark/benchmark.h>
+#include <QTemporaryDir>
 
-#include "tests/core/BundleTestSupport.h"
 #include "core/bundle/BundleReader.h"
 #include "core/bundle/BundleWriter.h"
 #include "db/CampaignStore.h"
+#include "tests/core/BundleTestSupport.h"
 
 using namespace driftlab;
 
@@ -18,7 +18,8 @@ static void BM_ImportMillionSampleBundle(benchmark::State& state) {
     for (auto _ : state) {
         BundleReadResult read = readBundle(bundle);
         QString error;
-        auto store = db::CampaignStore::open(dir.filePath(QStringLiteral("lab%1.sqlite").arg(round++)), &error);
+        auto store = db::CampaignStore::open(
+            dir.filePath(QStringLiteral("lab%1.sqlite").arg(round++)), &error);
         if (!read.ok() || !store || !store->importCampaign(*read.campaign, &error))
             state.SkipWithError("import failed");
     }

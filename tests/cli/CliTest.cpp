@@ -1,14 +1,14 @@
 // driftlab-cli import / export / info, run as a user runs them (a real process,
 // a real SQLite file), and the guarantee that bad input changes nothing.
+#include <gtest/gtest.h>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
-#include <gtest/gtest.h>
 
-#include "tests/core/BundleTestSupport.h"
 #include "core/bundle/BundleReader.h"
+#include "tests/core/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -30,7 +30,9 @@ CliResult runCli(const QStringList& args) {
 }
 
 /// The last line on stderr, where the one-line reason of a failure stands.
-QByteArray reason(const QByteArray& err) { return err.trimmed().split('\n').last(); }
+QByteArray reason(const QByteArray& err) {
+    return err.trimmed().split('\n').last();
+}
 
 }  // namespace
 
@@ -38,7 +40,8 @@ TEST(Cli, infoJsonDescribesRunsAndChannels) {
     CliResult r = runCli({QStringLiteral("info"), exampleBundlePath(), QStringLiteral("--json")});
     ASSERT_EQ(r.exitCode, 0) << r.err.constData();
     QJsonObject info = QJsonDocument::fromJson(r.out).object();
-    EXPECT_EQ(info[QStringLiteral("name")].toString(), QStringLiteral("X axis moving-state example"));
+    EXPECT_EQ(info[QStringLiteral("name")].toString(),
+              QStringLiteral("X axis moving-state example"));
     QJsonArray runs = info[QStringLiteral("runs")].toArray();
     ASSERT_EQ(runs.size(), 2);
     QJsonObject s1 = runs[0].toObject();
@@ -50,44 +53,54 @@ TEST(Cli, infoJsonDescribesRunsAndChannels) {
     QJsonArray channels = info[QStringLiteral("channels")].toArray();
     ASSERT_EQ(channels.size(), 13);
     EXPECT_EQ(channels[8].toObject()[QStringLiteral("role")].toString(), QStringLiteral("drift_x"));
-    EXPECT_EQ(channels[8].toObject()[QStringLiteral("quantity")].toString(), QStringLiteral("displacement"));
+    EXPECT_EQ(channels[8].toObject()[QStringLiteral("quantity")].toString(),
+              QStringLiteral("displacement"));
 }
 
 TEST(Cli, importPrintsTheIdAndExportWritesTheSameCampaignBack) {
     QTemporaryDir dir;
     const QString dbPath = dir.filePath(QStringLiteral("lab.sqlite"));
-    CliResult first = runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), dbPath});
+    CliResult first =
+        runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), dbPath});
     ASSERT_EQ(first.exitCode, 0) << first.err.constData();
     EXPECT_EQ(first.out.trimmed(), QByteArray("1"));
-    CliResult second = runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), dbPath});
+    CliResult second =
+        runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), dbPath});
     EXPECT_EQ(second.out.trimmed(), QByteArray("2"));
 
     const QString out = dir.filePath(QStringLiteral("exported"));
-    CliResult exported = runCli({QStringLiteral("export"), QStringLiteral("--db"), dbPath, QStringLiteral("--campaign"),
-                                 QStringLiteral("2"), QStringLiteral("--out"), out});
+    CliResult exported =
+        runCli({QStringLiteral("export"), QStringLiteral("--db"), dbPath,
+                QStringLiteral("--campaign"), QStringLiteral("2"), QStringLiteral("--out"), out});
     ASSERT_EQ(exported.exitCode, 0) << exported.err.constData();
     BundleReadResult original = readBundle(exampleBundlePath());
     BundleReadResult back = readBundle(out);
     ASSERT_TRUE(back.ok()) << qPrintable(back.error->toString());
     EXPECT_EQ(*back.campaign, *original.campaign);
 
-    CliResult info = runCli({QStringLiteral("info"), QStringLiteral("--db"), dbPath, QStringLiteral("--campaign"),
-                             QStringLiteral("1"), QStringLiteral("--json")});
+    CliResult info =
+        runCli({QStringLiteral("info"), QStringLiteral("--db"), dbPath,
+                QStringLiteral("--campaign"), QStringLiteral("1"), QStringLiteral("--json")});
     ASSERT_EQ(info.exitCode, 0) << info.err.constData();
-    EXPECT_EQ(QJsonDocument::fromJson(info.out).object()[QStringLiteral("runs")].toArray().size(), 2);
+    EXPECT_EQ(QJsonDocument::fromJson(info.out).object()[QStringLiteral("runs")].toArray().size(),
+              2);
 }
 
 TEST(Cli, usageErrorsExitWithTwoAndSayWhy) {
-    CliResult noCampaign = runCli({QStringLiteral("info"), QStringLiteral("--db"), QStringLiteral("/tmp/x.sqlite")});
+    CliResult noCampaign =
+        runCli({QStringLiteral("info"), QStringLiteral("--db"), QStringLiteral("/tmp/x.sqlite")});
     EXPECT_EQ(noCampaign.exitCode, 2);
-    EXPECT_EQ(reason(noCampaign.err), QByteArray("driftlab-cli info: --db needs --campaign ID (a number)"));
+    EXPECT_EQ(reason(noCampaign.err),
+              QByteArray("driftlab-cli info: --db needs --campaign ID (a number)"));
     CliResult unknown = runCli({QStringLiteral("frobnicate")});
     EXPECT_EQ(unknown.exitCode, 2);
-    CliResult missingCampaign = runCli({QStringLiteral("export"), QStringLiteral("--db"), QStringLiteral("/nonexistent/dir/x.sqlite"),
-                                        QStringLiteral("--campaign"), QStringLiteral("1"), QStringLiteral("--out"),
-                                        QStringLiteral("/tmp/never")});
+    CliResult missingCampaign =
+        runCli({QStringLiteral("export"), QStringLiteral("--db"),
+                QStringLiteral("/nonexistent/dir/x.sqlite"), QStringLiteral("--campaign"),
+                QStringLiteral("1"), QStringLiteral("--out"), QStringLiteral("/tmp/never")});
     EXPECT_EQ(missingCampaign.exitCode, 1);
-    EXPECT_TRUE(reason(missingCampaign.err).startsWith("driftlab-cli export: /nonexistent/dir/x.sqlite"))
+    EXPECT_TRUE(
+        reason(missingCampaign.err).startsWith("driftlab-cli export: /nonexistent/dir/x.sqlite"))
         << missingCampaign.err.constData();
 }
 
@@ -97,7 +110,10 @@ TEST_P(CliBadBundle, importFailsWithOneLineAndLeavesTheDatabaseByteForByteUnchan
     const BadBundleCase& bad = GetParam();
     QTemporaryDir dir;
     const QString dbPath = dir.filePath(QStringLiteral("lab.sqlite"));
-    ASSERT_EQ(runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), dbPath}).exitCode, 0);
+    ASSERT_EQ(
+        runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), dbPath})
+            .exitCode,
+        0);
     const QByteArray before = sha256OfFile(dbPath);
 
     const QString bundle = dir.filePath(QStringLiteral("bad"));
@@ -107,7 +123,8 @@ TEST_P(CliBadBundle, importFailsWithOneLineAndLeavesTheDatabaseByteForByteUnchan
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_TRUE(r.out.isEmpty()) << r.out.constData();
     const QByteArray line = reason(r.err);
-    EXPECT_TRUE(line.startsWith("driftlab-cli import: " + bundle.toUtf8() + '/' + bad.expectedLocation))
+    EXPECT_TRUE(
+        line.startsWith("driftlab-cli import: " + bundle.toUtf8() + '/' + bad.expectedLocation))
         << line.constData();
     EXPECT_TRUE(line.contains(bad.expectedMessage)) << line.constData();
     EXPECT_EQ(sha256OfFile(dbPath), before) << "a rejected import must not touch the database";

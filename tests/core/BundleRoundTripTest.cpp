@@ -1,10 +1,10 @@
 // Campaign bundles read back exactly what was written (DESIGN.md section 2).
-#include <QTemporaryDir>
 #include <gtest/gtest.h>
+#include <QTemporaryDir>
 
-#include "tests/core/BundleTestSupport.h"
 #include "core/bundle/BundleReader.h"
 #include "core/bundle/BundleWriter.h"
+#include "tests/core/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -77,20 +77,25 @@ TEST(BundleWriter, unknownKeysAreKeptForTheToolThatWroteThem) {
                   "\"operator\": {\"name\": \"A. Engineer\"}, \"nut_length_mm\"");
     BundleReadResult read = readBundle(dir.path());
     ASSERT_TRUE(read.ok());
-    EXPECT_EQ(read.campaign->extra.value(QStringLiteral("operator")).toObject().value(QStringLiteral("name")),
+    EXPECT_EQ(read.campaign->extra.value(QStringLiteral("operator"))
+                  .toObject()
+                  .value(QStringLiteral("name")),
               QStringLiteral("A. Engineer"));
     ASSERT_FALSE(writeBundle(*read.campaign, dir.filePath(QStringLiteral("out"))));
-    EXPECT_TRUE(readFile(dir.filePath(QStringLiteral("out/campaign.json"))).contains("A. Engineer"));
+    EXPECT_TRUE(
+        readFile(dir.filePath(QStringLiteral("out/campaign.json"))).contains("A. Engineer"));
 }
 
 TEST(BundleReader, rowsWithoutAnyValueAreSkippedWithAWarning) {
     QTemporaryDir dir;
     copyBundle(exampleBundlePath(), dir.path());
-    replaceInFile(dir.filePath(QStringLiteral("samples.csv")), "\nS1,30,", "\nS1,25,,,,,,,,,,,,,,,,\nS1,30,");
+    replaceInFile(dir.filePath(QStringLiteral("samples.csv")), "\nS1,30,",
+                  "\nS1,25,,,,,,,,,,,,,,,,\nS1,30,");
     BundleReadResult read = readBundle(dir.path());
     ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
     ASSERT_EQ(read.warnings.size(), 1);
-    EXPECT_TRUE(read.warnings[0].startsWith(QStringLiteral("samples.csv:5: 1 row(s) without any value")))
+    EXPECT_TRUE(
+        read.warnings[0].startsWith(QStringLiteral("samples.csv:5: 1 row(s) without any value")))
         << qPrintable(read.warnings[0]);
     EXPECT_EQ(read.campaign->runs[0].samples.rowCount(), 361u);
 }

@@ -1,9 +1,9 @@
 #include "tests/core/BundleTestSupport.h"
 
+#include <gtest/gtest.h>
 #include <QCryptographicHash>
 #include <QDir>
 #include <QFile>
-#include <gtest/gtest.h>
 #include <random>
 
 namespace driftlab::test {
@@ -15,7 +15,8 @@ QString exampleBundlePath() {
 void copyBundle(const QString& from, const QString& target) {
     QDir().mkpath(target);
     for (const QString& name : QDir(from).entryList(QDir::Files))
-        ASSERT_TRUE(QFile::copy(QDir(from).filePath(name), QDir(target).filePath(name))) << qPrintable(name);
+        ASSERT_TRUE(QFile::copy(QDir(from).filePath(name), QDir(target).filePath(name)))
+            << qPrintable(name);
 }
 
 QByteArray readFile(const QString& path) {
@@ -45,14 +46,17 @@ QByteArray sha256OfFile(const QString& path) {
 Campaign generatedCampaign(std::size_t rows, unsigned seed) {
     Campaign c;
     c.name = QStringLiteral("generated %1 rows").arg(rows);
-    c.machine = {QStringLiteral("VMC-850"), QStringLiteral("X"), QStringLiteral("generic-modbus"), {}};
+    c.machine = {
+        QStringLiteral("VMC-850"), QStringLiteral("X"), QStringLiteral("generic-modbus"), {}};
     c.screw = Screw{900, 40, 10, -40, QStringLiteral("fixed-free"), 11.5e-6, 7850, 460, 45, {}};
     c.nut_length_mm = 80;
     c.travel_mm = RangeMm{0, 700};
     c.interferometer = Interferometer{150, true, {}};
     const std::vector<std::pair<QString, ChannelRole>> channels{
-        {QStringLiteral("T_nut"), ChannelRole::Nut},         {QStringLiteral("T_bearing_fixed"), ChannelRole::Bearing},
-        {QStringLiteral("T_ambient"), ChannelRole::Ambient}, {QStringLiteral("T_air"), ChannelRole::Air},
+        {QStringLiteral("T_nut"), ChannelRole::Nut},
+        {QStringLiteral("T_bearing_fixed"), ChannelRole::Bearing},
+        {QStringLiteral("T_ambient"), ChannelRole::Ambient},
+        {QStringLiteral("T_air"), ChannelRole::Air},
         {QStringLiteral("T_bed"), ChannelRole::Structure}};
     for (const auto& [id, role] : channels) {
         c.channels.push_back({id, Quantity::Temperature, role, {}, {}, {}});
@@ -73,11 +77,12 @@ Campaign generatedCampaign(std::size_t rows, unsigned seed) {
         const double t = 0.1 * double(i);
         run.samples.time_s.push_back(t);
         const double rise = 1.0 - std::exp(-t / 1800.0);
-        const double values[] = {20 + 5 * rise + noise(rng), 20 + 3 * rise + noise(rng), 20 + noise(rng),
-                                 20.1 + noise(rng),          20 + 0.5 * rise + noise(rng),
-                                 350 + 140 * std::sin(t),    8000 * std::cos(t),
-                                 1.2 * std::cos(t) + noise(rng)};
-        for (std::size_t k = 0; k < c.sample_columns.size(); ++k) run.samples.values[k].push_back(values[k]);
+        const double values[] = {
+            20 + 5 * rise + noise(rng), 20 + 3 * rise + noise(rng),    20 + noise(rng),
+            20.1 + noise(rng),          20 + 0.5 * rise + noise(rng),  350 + 140 * std::sin(t),
+            8000 * std::cos(t),         1.2 * std::cos(t) + noise(rng)};
+        for (std::size_t k = 0; k < c.sample_columns.size(); ++k)
+            run.samples.values[k].push_back(values[k]);
     }
     run.motion.push_back({0, 2.1, 210, 490, 8000});
     run.positioning.push_back({0, 0, 0, Direction::Positive, 1.25});
@@ -86,78 +91,115 @@ Campaign generatedCampaign(std::size_t rows, unsigned seed) {
     return c;
 }
 
-void PrintTo(const BadBundleCase& bad, std::ostream* os) { *os << bad.name; }
+void PrintTo(const BadBundleCase& bad, std::ostream* os) {
+    *os << bad.name;
+}
 
 const std::vector<BadBundleCase>& badBundleCases() {
-    auto file = [](const QString& dir, const char* name) { return QDir(dir).filePath(QString::fromLatin1(name)); };
+    auto file = [](const QString& dir, const char* name) {
+        return QDir(dir).filePath(QString::fromLatin1(name));
+    };
     static const std::vector<BadBundleCase> cases{
-        {"wrong_format", [=](const QString& d) {
+        {"wrong_format",
+         [=](const QString& d) {
              replaceInFile(file(d, "campaign.json"), "driftlab.campaign/1", "driftlab.campaign/9");
-         }, "campaign.json", "format: unsupported format 'driftlab.campaign/9'"},
-        {"malformed_json", [=](const QString& d) {
-             replaceInFile(file(d, "campaign.json"), "\"name\": \"VMC-850\",", "\"name\": \"VMC-850\",,");
-         }, "campaign.json:5:", ""},
-        {"unknown_quantity", [=](const QString& d) {
-             replaceInFile(file(d, "campaign.json"), "\"quantity\": \"speed\"", "\"quantity\": \"pressure\"");
-         }, "campaign.json", "channels[7].quantity: unknown quantity 'pressure'"},
-        {"unknown_role", [=](const QString& d) {
-             replaceInFile(file(d, "campaign.json"), "\"role\": \"structure\"", "\"role\": \"gantry\"");
-         }, "campaign.json", "channels[5].role: unknown role 'gantry'"},
-        {"role_of_other_quantity", [=](const QString& d) {
+         },
+         "campaign.json", "format: unsupported format 'driftlab.campaign/9'"},
+        {"malformed_json",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"name\": \"VMC-850\",",
+                           "\"name\": \"VMC-850\",,");
+         },
+         "campaign.json:5:", ""},
+        {"unknown_quantity",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"quantity\": \"speed\"",
+                           "\"quantity\": \"pressure\"");
+         },
+         "campaign.json", "channels[7].quantity: unknown quantity 'pressure'"},
+        {"unknown_role",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"role\": \"structure\"",
+                           "\"role\": \"gantry\"");
+         },
+         "campaign.json", "channels[5].role: unknown role 'gantry'"},
+        {"role_of_other_quantity",
+         [=](const QString& d) {
              replaceInFile(file(d, "campaign.json"), "\"role\": \"drift_x\"", "\"role\": \"nut\"");
-         }, "campaign.json", "channels[8].role: unknown role 'nut' for a displacement channel"},
-        {"negative_screw_length", [=](const QString& d) {
+         },
+         "campaign.json", "channels[8].role: unknown role 'nut' for a displacement channel"},
+        {"negative_screw_length",
+         [=](const QString& d) {
              replaceInFile(file(d, "campaign.json"), "\"length_mm\": 900", "\"length_mm\": -900");
-         }, "campaign.json", "screw.length_mm: must be positive"},
+         },
+         "campaign.json", "screw.length_mm: must be positive"},
         {"missing_header", [=](const QString& d) { writeFile(file(d, "samples.csv"), "\n\n"); },
          "samples.csv", "missing header line"},
-        {"missing_time_column", [=](const QString& d) {
+        {"missing_time_column",
+         [=](const QString& d) {
              replaceInFile(file(d, "samples.csv"), "run,time_s,", "run,time,");
-         }, "samples.csv:1", "missing column 'time_s'"},
-        {"duplicate_header", [=](const QString& d) {
+         },
+         "samples.csv:1", "missing column 'time_s'"},
+        {"duplicate_header",
+         [=](const QString& d) {
              replaceInFile(file(d, "samples.csv"), "T_air,T_bed", "T_air,T_air");
-         }, "samples.csv:1:8", "duplicate column 'T_air' in header (also column 7)"},
-        {"undeclared_channel", [=](const QString& d) {
-             replaceInFile(file(d, "samples.csv"), "T_bed", "T_table");
-         }, "samples.csv:1:8", "column 'T_table' is not a channel declared in campaign.json"},
-        {"unknown_run", [=](const QString& d) {
-             replaceInFile(file(d, "samples.csv"), "\nS1,20,", "\nS9,20,");
-         }, "samples.csv:4:1", "unknown run id 'S9'"},
-        {"non_numeric_cell", [=](const QString& d) {
+         },
+         "samples.csv:1:8", "duplicate column 'T_air' in header (also column 7)"},
+        {"undeclared_channel",
+         [=](const QString& d) { replaceInFile(file(d, "samples.csv"), "T_bed", "T_table"); },
+         "samples.csv:1:8", "column 'T_table' is not a channel declared in campaign.json"},
+        {"unknown_run",
+         [=](const QString& d) { replaceInFile(file(d, "samples.csv"), "\nS1,20,", "\nS9,20,"); },
+         "samples.csv:4:1", "unknown run id 'S9'"},
+        {"non_numeric_cell",
+         [=](const QString& d) {
              replaceInFile(file(d, "samples.csv"), "\nS1,20,", "\nS1,20,warm");
-         }, "samples.csv:4:3", "non-numeric cell 'warm"},
-        {"nan_cell", [=](const QString& d) {
-             replaceInFile(file(d, "samples.csv"), "\nS1,20,", "\nS1,nan,");
-         }, "samples.csv:4:2", "NaN or infinite value 'nan' in column 'time_s'"},
-        {"inf_cell", [=](const QString& d) {
-             replaceInFile(file(d, "positioning.csv"), "\nS1,0,0,0,+,0.13\n", "\nS1,0,0,0,+,-inf\n");
-         }, "positioning.csv:2:6", "NaN or infinite value"},
-        {"time_backwards", [=](const QString& d) {
-             replaceInFile(file(d, "samples.csv"), "\nS1,30,", "\nS1,5,");
-         }, "samples.csv:5:2", "time goes backwards or repeats in run 'S1' (5 s after 20 s)"},
-        {"truncated_csv", [=](const QString& d) {
+         },
+         "samples.csv:4:3", "non-numeric cell 'warm"},
+        {"nan_cell",
+         [=](const QString& d) { replaceInFile(file(d, "samples.csv"), "\nS1,20,", "\nS1,nan,"); },
+         "samples.csv:4:2", "NaN or infinite value 'nan' in column 'time_s'"},
+        {"inf_cell",
+         [=](const QString& d) {
+             replaceInFile(file(d, "positioning.csv"), "\nS1,0,0,0,+,0.13\n",
+                           "\nS1,0,0,0,+,-inf\n");
+         },
+         "positioning.csv:2:6", "NaN or infinite value"},
+        {"time_backwards",
+         [=](const QString& d) { replaceInFile(file(d, "samples.csv"), "\nS1,30,", "\nS1,5,"); },
+         "samples.csv:5:2", "time goes backwards or repeats in run 'S1' (5 s after 20 s)"},
+        {"truncated_csv",
+         [=](const QString& d) {
              QByteArray csv = readFile(file(d, "samples.csv"));
              writeFile(file(d, "samples.csv"), csv.left(csv.size() - 40));
-         }, "samples.csv:543:", "(truncated line?)"},
-        {"bad_direction", [=](const QString& d) {
-             replaceInFile(file(d, "positioning.csv"), ",70,+,", ",70,up,");
-         }, "positioning.csv:3:5", "direction must be + or -, found 'up'"},
-        {"kelvin_temperatures", [=](const QString& d) {
+         },
+         "samples.csv:543:", "(truncated line?)"},
+        {"bad_direction",
+         [=](const QString& d) { replaceInFile(file(d, "positioning.csv"), ",70,+,", ",70,up,"); },
+         "positioning.csv:3:5", "direction must be + or -, found 'up'"},
+        {"kelvin_temperatures",
+         [=](const QString& d) {
              QByteArray csv = readFile(file(d, "samples.csv"));
              QList<QByteArray> lines = csv.split('\n');
              for (qsizetype i = 1; i < lines.size(); ++i) {
                  QList<QByteArray> f = lines[i].split(',');
-                 if (f.size() > 2 && !f[2].isEmpty()) f[2] = QByteArray::number(f[2].toDouble() + 273.15);
+                 if (f.size() > 2 && !f[2].isEmpty())
+                     f[2] = QByteArray::number(f[2].toDouble() + 273.15);
                  lines[i] = f.join(',');
              }
              writeFile(file(d, "samples.csv"), lines.join('\n'));
-         }, "samples.csv:1:3", "looks like kelvin"},
-        {"targets_in_micrometres", [=](const QString& d) {
+         },
+         "samples.csv:1:3", "looks like kelvin"},
+        {"targets_in_micrometres",
+         [=](const QString& d) {
              replaceInFile(file(d, "positioning.csv"), ",70,+,", ",70000,+,");
-         }, "positioning.csv:3:4", "outside the travel [0, 700] mm (unit mix-up?"},
-        {"motion_ends_before_start", [=](const QString& d) {
+         },
+         "positioning.csv:3:4", "outside the travel [0, 700] mm (unit mix-up?"},
+        {"motion_ends_before_start",
+         [=](const QString& d) {
              replaceInFile(file(d, "motion.csv"), "S1,0.000,2.100,", "S1,0.000,-2.100,");
-         }, "motion.csv:2:3", "segment ends (-2.1 s) before it starts (0 s)"},
+         },
+         "motion.csv:2:3", "segment ends (-2.1 s) before it starts (0 s)"},
     };
     return cases;
 }

@@ -1,10 +1,10 @@
 // Every bad-input class of the bundle format gives an error naming file,
 // line and column, and returns no campaign (issue #2).
-#include <QTemporaryDir>
 #include <gtest/gtest.h>
+#include <QTemporaryDir>
 
-#include "tests/core/BundleTestSupport.h"
 #include "core/bundle/BundleReader.h"
+#include "tests/core/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -41,7 +41,8 @@ TEST(BundleReader, feedAxisRunWithoutScrewIsRejected) {
     BundleReadResult result = readBundle(dir.path());
     ASSERT_TRUE(result.error);
     EXPECT_EQ(result.error->toString(),
-              QStringLiteral("campaign.json: runs[0]: a moving run needs 'screw' and 'nut_length_mm' in the campaign"));
+              QStringLiteral("campaign.json: runs[0]: a moving run needs 'screw' and "
+                             "'nut_length_mm' in the campaign"));
 }
 
 TEST(BundleReader, expansionCoefficientInPpmIsAUnitMixUp) {
@@ -50,6 +51,7 @@ TEST(BundleReader, expansionCoefficientInPpmIsAUnitMixUp) {
     replaceInFile(dir.filePath(QStringLiteral("campaign.json")), "1.15e-05", "11.5");
     BundleReadResult result = readBundle(dir.path());
     ASSERT_TRUE(result.error);
-    EXPECT_TRUE(result.error->toString().startsWith(QStringLiteral("campaign.json: screw.alpha_per_K: 11.5 per K")))
+    EXPECT_TRUE(result.error->toString().startsWith(
+        QStringLiteral("campaign.json: screw.alpha_per_K: 11.5 per K")))
         << qPrintable(result.error->toString());
 }

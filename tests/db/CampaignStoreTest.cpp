@@ -1,14 +1,14 @@
 // The SQLite campaign store: lossless round trips, one transaction per import.
+#include <gtest/gtest.h>
 #include <QCoreApplication>
 #include <QSqlQuery>
 #include <QTemporaryDir>
-#include <gtest/gtest.h>
 
-#include "tests/core/BundleTestSupport.h"
 #include "core/bundle/BundleReader.h"
 #include "core/bundle/BundleWriter.h"
 #include "db/CampaignStore.h"
 #include "db/SchemaMigrations.h"
+#include "tests/core/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -115,7 +115,8 @@ TEST(CampaignStore, cancelledImportStoresNothing) {
     const QString path = dir.filePath(QStringLiteral("lab.sqlite"));
     auto store = openStore(path);
     QString error;
-    auto id = store->importCampaign(generatedCampaign(100'000), &error, [](double f) { return f < 0.5; });
+    auto id =
+        store->importCampaign(generatedCampaign(100'000), &error, [](double f) { return f < 0.5; });
     EXPECT_FALSE(id);
     EXPECT_TRUE(error.contains(QStringLiteral("import cancelled"))) << qPrintable(error);
     EXPECT_TRUE(store->listCampaigns().empty());

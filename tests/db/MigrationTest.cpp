@@ -1,14 +1,14 @@
 // A database written by schema v1 opens and migrates in this build.
+#include <gtest/gtest.h>
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QTemporaryDir>
-#include <gtest/gtest.h>
 
-#include "tests/core/BundleTestSupport.h"
 #include "core/bundle/BundleReader.h"
 #include "db/CampaignStore.h"
 #include "db/SchemaMigrations.h"
+#include "tests/core/BundleTestSupport.h"
 
 using namespace driftlab;
 using driftlab::db::CampaignStore;
@@ -18,23 +18,27 @@ namespace {
 /// Writes a v1 database the way a build of schema v1 did: only migration 1,
 /// rows inserted with plain SQL (no code of this build's store involved).
 void writeSchemaV1Database(const QString& path) {
-    QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("v1-writer"));
+    QSqlDatabase db =
+        QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("v1-writer"));
     db.setDatabaseName(path);
     ASSERT_TRUE(db.open());
     QString error;
     ASSERT_TRUE(db::migrate(db, &error, 1)) << qPrintable(error);
     ASSERT_EQ(db::schemaVersion(db), 1);
     QSqlQuery q(db);
-    for (const char* sql : {
-             "INSERT INTO campaign (id, name, nut_length_mm, travel_from_mm, travel_to_mm) "
-             "VALUES (1, 'legacy campaign', 80, 0, 700)",
-             "INSERT INTO machine VALUES (1, 'VMC-850', 'X', 'generic-modbus', '{}')",
-             "INSERT INTO screw VALUES (1, 900, 40, 10, -40, 'fixed-free', 1.15e-05, 7850, 460, 45, '{}')",
-             "INSERT INTO channel VALUES (1, 1, 'T_nut', 'temperature', 'nut', 'nut flank', NULL, 0, 0, '{}')",
-             "INSERT INTO run VALUES (1, 1, 'S1', 0, 'moving', 8000, 210, 490, 'legacy run', '{}')",
-             "INSERT INTO sample VALUES (1, 0, 1, 20.0), (1, 1, 1, 20.5)",
-             "INSERT INTO positioning VALUES (1, 0, 0, 350, '+', 1.5)"}) {
-        ASSERT_TRUE(q.exec(QString::fromLatin1(sql))) << sql << " " << qPrintable(q.lastError().text());
+    for (const char* sql :
+         {"INSERT INTO campaign (id, name, nut_length_mm, travel_from_mm, travel_to_mm) "
+          "VALUES (1, 'legacy campaign', 80, 0, 700)",
+          "INSERT INTO machine VALUES (1, 'VMC-850', 'X', 'generic-modbus', '{}')",
+          "INSERT INTO screw VALUES (1, 900, 40, 10, -40, 'fixed-free', 1.15e-05, 7850, 460, 45, "
+          "'{}')",
+          "INSERT INTO channel VALUES (1, 1, 'T_nut', 'temperature', 'nut', 'nut flank', NULL, 0, "
+          "0, '{}')",
+          "INSERT INTO run VALUES (1, 1, 'S1', 0, 'moving', 8000, 210, 490, 'legacy run', '{}')",
+          "INSERT INTO sample VALUES (1, 0, 1, 20.0), (1, 1, 1, 20.5)",
+          "INSERT INTO positioning VALUES (1, 0, 0, 350, '+', 1.5)"}) {
+        ASSERT_TRUE(q.exec(QString::fromLatin1(sql)))
+            << sql << " " << qPrintable(q.lastError().text());
     }
     db.close();
     db = QSqlDatabase();
@@ -65,9 +69,10 @@ TEST(SchemaMigration, aSchemaV1DatabaseOpensMigratedWithItsDataIntact) {
     QSqlQuery q(store->database());
     ASSERT_TRUE(q.exec(QStringLiteral("SELECT status FROM run WHERE id = 1")) && q.next());
     EXPECT_EQ(q.value(0).toString(), QStringLiteral("complete"));
-    EXPECT_TRUE(q.exec(QStringLiteral("INSERT INTO model_fit (campaign_id, model, train_runs_json, "
-                                      "test_runs_json, parameters_json, metrics_json) "
-                                      "VALUES (1, 'mlr', '[\"S1\"]', '[]', '{}', '{}')")))
+    EXPECT_TRUE(
+        q.exec(QStringLiteral("INSERT INTO model_fit (campaign_id, model, train_runs_json, "
+                              "test_runs_json, parameters_json, metrics_json) "
+                              "VALUES (1, 'mlr', '[\"S1\"]', '[]', '{}', '{}')")))
         << qPrintable(q.lastError().text());
 }
 
@@ -84,6 +89,7 @@ TEST(SchemaMigration, aDatabaseFromANewerBuildIsRefusedNotDamaged) {
     const QByteArray before = test::sha256OfFile(path);
     QString error;
     EXPECT_FALSE(CampaignStore::open(path, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("schema v99 is newer than this build"))) << qPrintable(error);
+    EXPECT_TRUE(error.contains(QStringLiteral("schema v99 is newer than this build")))
+        << qPrintable(error);
     EXPECT_EQ(test::sha256OfFile(path), before);
 }
