@@ -1,0 +1,34 @@
+#pragma once
+// ISO 230-3 spindle test on the simulated rig: a speed programme (blocks with
+// stops) heats the spindle housing and, more slowly, the column; five
+// non-contact probes see the tool-side drift (x, y, z) and two tilts.
+// A two-node lumped model: enough structure for the drift models to be fitted,
+// not a finite-element spindle.
+
+#include <QString>
+#include <vector>
+
+#include "core/domain/Campaign.h"
+
+namespace driftlab::rig {
+
+struct SpeedBlock {
+    double duration_s = 0;
+    double speed_rpm = 0;  ///< 0 = stop
+};
+
+struct SpindleTestSpec {
+    QString run_id = QStringLiteral("SP1");
+    std::vector<SpeedBlock> blocks{{1800, 3000}, {1800, 6000}, {900, 0}, {1800, 9000}, {3600, 0}};
+    double sample_interval_s = 5;
+    double ambient_C = 20;
+    unsigned seed = 1;
+};
+
+/// The channels a spindle run logs (added to a campaign that lacks them).
+std::vector<Channel> spindleTestChannels();
+
+/// Simulates the run; the campaign must already hold the spindleTestChannels().
+Run simulateSpindleTest(const SpindleTestSpec& spec, const std::vector<QString>& sampleColumns);
+
+}  // namespace driftlab::rig
