@@ -1,0 +1,36 @@
+#include "core/models/FirstOrderLag.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace driftlab::models {
+
+Eigen::VectorXd lagResponse(const PiecewiseInput& input, double tau_s,
+                            const std::vector<double>& at_s) {
+    std::vector<std::size_t> order(at_s.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return at_s[a] < at_s[b]; });
+    auto step = [tau_s](double e, double u, double dt) {
+        return e + (u - e) * -std::expm1(-dt / tau_s);
+    };
+
+    Eigen::VectorXd response = Eigen::VectorXd::Zero(Eigen::Index(at_s.size()));
+    const std::vector<double>& t = input.time_s;
+    if (t.empty()) return response;
+    double state = 0;   // e at time t[k]
+    std::size_t k = 0;  // the input piece in force
+    for (std::size_t i : order) {
+        const double when = at_s[i];
+        if (when < t.front()) continue;
+        while (k + 1 < t.size() && t[k + 1] <= when) {
+            state = step(state, input.value[k], t[k + 1] - t[k]);
+            ++k;
+        }
+        response[Eigen::Index(i)] = step(state, input.value[k], when - t[k]);
+    }
+    return response;
+}
+
+}  // namespace driftlab::models

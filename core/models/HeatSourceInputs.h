@@ -1,0 +1,29 @@
+#pragma once
+// The heat-source activities that drive the lag models, as piecewise-constant
+// inputs over a run: screw speed, motor power, spindle speed.
+
+#include <QString>
+
+#include "core/models/FirstOrderLag.h"
+#include "core/models/ThermalErrorData.h"
+
+namespace driftlab::models {
+
+// Each throws ModelError naming the model, the run and the missing column when
+// the run cannot give the input from its start up to `until_s`.
+
+/// Screw speed |ω| = 2π·|feed|/(60·lead), rad/s: from the motion segments when
+/// the run has them (exact timing, dwells at zero), else from the feed samples.
+PiecewiseInput screwSpeed(const RunData& run, double until_s, const QString& model);
+
+/// Screw speed from the feed_mm_min samples, each held until the next sample.
+PiecewiseInput screwSpeedFromFeed(const RunData& run, double until_s, const QString& model);
+
+/// Motor mechanical power |torque·ω|, W, from the torque_Nm and feed_mm_min
+/// samples, each held until the next sample.
+PiecewiseInput motorPower(const RunData& run, double until_s, const QString& model);
+
+/// Spindle speed, rad/s, from the campaign's speed channel.
+PiecewiseInput spindleSpeed(const RunData& run, double until_s, const QString& model);
+
+}  // namespace driftlab::models

@@ -1,0 +1,247 @@
+#include "core/models/LaggedRegression.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/models/LeastSquares.h"
+#include "core/models/ModelError.h"
+#include "core/models/NelderMead.h"
+
+namespace driftlab::models {
+namespace {
+
+/// Step of the central difference in log τ for the parameter uncertainty.
+constexpr double kLogTauStep = 1e-4;
+
+Eigen::VectorXd stacked(const std::vector<Eigen::VectorXd>& parts) {
+    Eigen::Index rows = 0;
+    for (const Eigen::VectorXd& p : parts) rows += p.size();
+    Eigen::VectorXd v(rows);
+    Eigen::Index at = 0;
+    for (const Eigen::VectorXd& p : parts) {
+        v.segment(at, p.size()) = p;
+        at += p.size();
+    }
+    return v;
+}
+
+QString gainUnit(const QString& inputUnit, bool perMm) {
+    if (perMm) return QStringLiteral("µm/(%1·mm)").arg(inputUnit);
+    return inputUnit.contains(u'/') ? QStringLiteral("µm/(%1)").arg(inputUnit)
+                                    : QStringLiteral("µm/") + inputUnit;
+}
+
+}  // namespace
+
+LaggedRegression::LaggedRegression(std::vector<LagTerm> terms, LagSearchOptions options)
+    : terms_(std::move(terms)), options_(options) {}
+
+void LaggedRegression::validate(std::span<const LagCase> cases,
+                                const std::vector<Eigen::VectorXd>& observed) const {
+    if (!(options_.min_tau_s > 0) || !(options_.max_tau_s > options_.min_tau_s) ||
+        options_.grid_points < 2)
+        throw ModelError(
+            QStringLiteral("the time-constant search needs 0 < min < max and at "
+                           "least 2 grid points"));
+    if (terms_.empty() || terms_.size() > 3)
+        throw ModelError(QStringLiteral("a lag model takes 1 to 3 heat-source terms, not %1")
+                             .arg(terms_.size()));
+    if (observed.size() != cases.size())
+        throw ModelError(QStringLiteral("%1 training runs but %2 observation sets")
+                             .arg(cases.size())
+                             .arg(observed.size()));
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const Eigen::Index points = Eigen::Index(cases[i].time_s.size());
+        for (const LagTerm& term : terms_)
+            if (term.input >= cases[i].inputs.size())
+                throw ModelError(
+                    QStringLiteral("term '%1' has no input in a training run").arg(term.name));
+        if (observed[i].size() != points || (position_dependent_ && cases[i].dx.size() != points))
+            throw ModelError(
+                QStringLiteral("a training run has not one observation and position "
+                               "per point"));
+    }
+}
+
+Eigen::VectorXd LaggedRegression::termResponse(std::span<const LagCase> cases, std::size_t k,
+                                               double tau_s) const {
+    std::vector<Eigen::VectorXd> parts;
+    for (const LagCase& c : cases)
+        parts.push_back(lagResponse(c.inputs[terms_[k].input], tau_s, c.time_s));
+    return stacked(parts);
+}
+
+Eigen::MatrixXd LaggedRegression::responses(std::span<const LagCase> cases,
+                                            const std::vector<double>& tau_s) const {
+    std::vector<Eigen::VectorXd> columns;
+    for (std::size_t k = 0; k < terms_.size(); ++k)
+        columns.push_back(termResponse(cases, k, tau_s[k]));
+    Eigen::MatrixXd F(columns.front().size(), Eigen::Index(columns.size()));
+    for (std::size_t k = 0; k < columns.size(); ++k) F.col(Eigen::Index(k)) = columns[k];
+    return F;
+}
+
+Eigen::MatrixXd LaggedRegression::design(const Eigen::MatrixXd& F,
+                                         const Eigen::VectorXd& dx) const {
+    return position_dependent_ ? withPositionGain(F, dx) : F;
+}
+
+std::vector<double> LaggedRegression::gridSearch(std::span<const LagCase> cases,
+                                                 const Eigen::VectorXd& dx,
+                                                 const Eigen::VectorXd& y) const {
+    const int G = options_.grid_points;
+    const std::size_t K = terms_.size();
+    std::vector<double> grid(std::size_t(G), 0.0);
+    const double lo = std::log(options_.min_tau_s), hi = std::log(options_.max_tau_s);
+    for (int g = 0; g < G; ++g) grid[std::size_t(g)] = std::exp(lo + (hi - lo) * g / (G - 1));
+
+    // Responses for every grid τ, once per term: the search then only solves
+    // small least squares.
+    std::vector<Eigen::MatrixXd> byTerm(K, Eigen::MatrixXd(y.size(), G));
+    for (std::size_t k = 0; k < K; ++k) {
+        for (int g = 0; g < G; ++g) byTerm[k].col(g) = termResponse(cases, k, grid[std::size_t(g)]);
+        if (byTerm[k].cwiseAbs().maxCoeff() == 0)
+            throw ModelError(QStringLiteral("the input of '%1' is zero at every training "
+                                            "observation: the training runs show no heat from it")
+                                 .arg(terms_[k].name));
+    }
+
+    // Terms on the same input are interchangeable: only ascending grid indices.
+    auto admissible = [&](const std::vector<int>& index) {
+        for (std::size_t k = 0; k < K; ++k)
+            for (std::size_t j = 0; j < k; ++j)
+                if (terms_[j].input == terms_[k].input && index[k] <= index[j]) return false;
+        return true;
+    };
+    std::vector<int> index(K, 0), best;
+    double bestRss = std::numeric_limits<double>::infinity();
+    Eigen::MatrixXd F(y.size(), Eigen::Index(K));
+    for (;;) {
+        if (admissible(index)) {
+            for (std::size_t k = 0; k < K; ++k) F.col(Eigen::Index(k)) = byTerm[k].col(index[k]);
+            const double rss = solveLeastSquares(design(F, dx), y).rss;
+            if (rss < bestRss) {
+                bestRss = rss;
+                best = index;
+            }
+        }
+        std::size_t k = 0;
+        while (k < K && ++index[k] == G) index[k++] = 0;
+        if (k == K) break;
+    }
+    if (best.empty())
+        throw ModelError(QStringLiteral("the time-constant grid has too few points for %1 "
+                                        "terms on one input")
+                             .arg(K));
+    std::vector<double> tau(K);
+    for (std::size_t k = 0; k < K; ++k) tau[k] = grid[std::size_t(best[k])];
+    return tau;
+}
+
+std::vector<double> LaggedRegression::sortedPerInput(std::vector<double> tau_s) const {
+    std::map<std::size_t, std::vector<std::size_t>> termsOfInput;
+    for (std::size_t k = 0; k < terms_.size(); ++k) termsOfInput[terms_[k].input].push_back(k);
+    for (const auto& [input, ks] : termsOfInput) {
+        std::vector<double> values;
+        for (std::size_t k : ks) values.push_back(tau_s[k]);
+        std::sort(values.begin(), values.end());
+        for (std::size_t i = 0; i < ks.size(); ++i) tau_s[ks[i]] = values[i];
+    }
+    return tau_s;
+}
+
+Eigen::MatrixXd LaggedRegression::jacobian(std::span<const LagCase> cases, const Eigen::MatrixXd& X,
+                                           const Eigen::VectorXd& dx) const {
+    const Eigen::Index K = Eigen::Index(terms_.size());
+    Eigen::MatrixXd J(X.rows(), K + X.cols());
+    J.rightCols(X.cols()) = X;
+    // Only term k's response depends on τ_k; it enters scaled by the term's gain.
+    for (Eigen::Index k = 0; k < K; ++k) {
+        const double tau = tau_s_[std::size_t(k)];
+        const Eigen::VectorXd slope =
+            (termResponse(cases, std::size_t(k), tau * std::exp(kLogTauStep)) -
+             termResponse(cases, std::size_t(k), tau * std::exp(-kLogTauStep))) /
+            (2 * kLogTauStep);
+        Eigen::VectorXd gain = Eigen::VectorXd::Constant(X.rows(), gains_[k]);
+        if (position_dependent_) gain += gains_[K + k] * dx;
+        J.col(k) = slope.cwiseProduct(gain);
+    }
+    return J;
+}
+
+FitSummary LaggedRegression::fit(const std::vector<LagCase>& cases,
+                                 const std::vector<Eigen::VectorXd>& observed,
+                                 bool positionDependent) {
+    position_dependent_ = positionDependent;
+    validate(cases, observed);
+    std::vector<Eigen::VectorXd> dxParts;
+    for (const LagCase& c : cases)
+        dxParts.push_back(positionDependent ? c.dx
+                                            : Eigen::VectorXd::Zero(Eigen::Index(c.time_s.size())));
+    const Eigen::VectorXd y = stacked(observed), dx = stacked(dxParts);
+    const std::size_t K = terms_.size();
+    const Eigen::Index parameterCount = Eigen::Index(K) * (positionDependent ? 3 : 2);
+    if (y.size() <= parameterCount)
+        throw ModelError(QStringLiteral("%1 training observations are too few for %2 parameters")
+                             .arg(y.size())
+                             .arg(parameterCount));
+
+    const double lo = std::log(options_.min_tau_s), hi = std::log(options_.max_tau_s);
+    auto tauOf = [&](const Eigen::VectorXd& logTau) {
+        std::vector<double> tau(K);
+        for (std::size_t k = 0; k < K; ++k)
+            tau[k] = std::exp(std::clamp(logTau[Eigen::Index(k)], lo, hi));
+        return tau;
+    };
+    auto rss = [&](const Eigen::VectorXd& logTau) {
+        return solveLeastSquares(design(responses(cases, tauOf(logTau)), dx), y).rss;
+    };
+    const std::vector<double> start = gridSearch(cases, dx, y);
+    Eigen::VectorXd logStart(static_cast<Eigen::Index>(K));
+    for (std::size_t k = 0; k < K; ++k) logStart[Eigen::Index(k)] = std::log(start[k]);
+    NelderMeadOptions search;
+    search.initial_step = (hi - lo) / (options_.grid_points - 1);
+    const NelderMeadResult refined = minimiseNelderMead(rss, logStart, search);
+
+    tau_s_ = sortedPerInput(tauOf(refined.x));
+    const Eigen::MatrixXd X = design(responses(cases, tau_s_), dx);
+    const LeastSquaresFit linear = solveLeastSquares(X, y);
+    gains_ = linear.coefficients;
+    const Eigen::VectorXd sigma = parameterSigma(jacobian(cases, X, dx), linear.rss);
+
+    FitSummary summary;
+    summary.iterations = refined.iterations;
+    const Eigen::Index n = Eigen::Index(K);
+    for (Eigen::Index k = 0; k < n; ++k) {
+        const LagTerm& term = terms_[std::size_t(k)];
+        const double tau = tau_s_[std::size_t(k)];
+        summary.parameters[term.name + QStringLiteral(".tau")] = {tau, tau * sigma[k],
+                                                                  QStringLiteral("s")};
+        summary.parameters[term.name + QStringLiteral(".a")] = {gains_[k], sigma[n + k],
+                                                                gainUnit(term.input_unit, false)};
+        if (positionDependent)
+            summary.parameters[term.name + QStringLiteral(".b")] = {
+                gains_[n + k], sigma[2 * n + k], gainUnit(term.input_unit, true)};
+        if (tau <= options_.min_tau_s * 1.001 || tau >= options_.max_tau_s * 0.999)
+            summary.notes << QStringLiteral(
+                                 "the time constant of '%1' sits at the search bound "
+                                 "(%2 s): the training runs do not pin it down")
+                                 .arg(term.name, messageNumber(tau));
+    }
+    if (!refined.converged)
+        summary.notes << QStringLiteral(
+                             "the time-constant search stopped after %1 iterations "
+                             "without converging")
+                             .arg(refined.iterations);
+    return summary;
+}
+
+Eigen::VectorXd LaggedRegression::predict(const LagCase& c) const {
+    const Eigen::VectorXd dx =
+        position_dependent_ ? c.dx : Eigen::VectorXd::Zero(Eigen::Index(c.time_s.size()));
+    return design(responses(std::span<const LagCase>(&c, 1), tau_s_), dx) * gains_;
+}
+
+}  // namespace driftlab::models

@@ -1,0 +1,42 @@
+#include "core/models/ModelFactory.h"
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "core/models/ExponentialModel.h"
+#include "core/models/MlrModel.h"
+#include "core/models/PolyPositionModel.h"
+#include "core/models/SensorlessModel.h"
+
+namespace driftlab::models {
+namespace {
+
+using Maker = std::function<std::unique_ptr<ThermalErrorModel>()>;
+
+/// Every model, once. A new model (the heat-transfer simulation) is one more line.
+const std::vector<std::pair<QString, Maker>>& registry() {
+    static const std::vector<std::pair<QString, Maker>> models{
+        {QStringLiteral("mlr"), [] { return std::make_unique<MlrModel>(); }},
+        {QStringLiteral("poly-position"), [] { return std::make_unique<PolyPositionModel>(); }},
+        {QStringLiteral("exponential"), [] { return std::make_unique<ExponentialModel>(); }},
+        {QStringLiteral("sensorless"), [] { return std::make_unique<SensorlessModel>(); }},
+    };
+    return models;
+}
+
+}  // namespace
+
+QStringList modelNames() {
+    QStringList names;
+    for (const auto& [name, make] : registry()) names << name;
+    return names;
+}
+
+std::unique_ptr<ThermalErrorModel> makeModel(const QString& name) {
+    for (const auto& [known, make] : registry())
+        if (known == name) return make();
+    return nullptr;
+}
+
+}  // namespace driftlab::models

@@ -1,0 +1,101 @@
+#pragma once
+// The data a thermal-error model sees, built from a campaign: per run, the
+// thermal error observations, the temperature rise of every temperature channel
+// and the axis signals. Every model reads the same data, so every model is
+// scored against the same thermal error.
+
+#include <Eigen/Core>
+#include <QString>
+#include <QStringList>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "core/domain/Campaign.h"
+
+namespace driftlab::models {
+
+struct DatasetOptions {
+    /// A displacement channel to predict (`--target`); empty: the positioning
+    /// error of feed-axis runs.
+    QString target_channel;
+    /// The longest gap in a sampled signal that interpolation may bridge, s.
+    double max_gap_s = 120;
+    /// A temperature rise is taken from the median of the samples in this first
+    /// window of the channel (robust to a spike in the first sample), s.
+    double reference_window_s = 60;
+};
+
+/// One thermal error observation.
+/// Positioning target: error_um = deviation_um − deviation_um of cycle 0 at the
+/// same target and direction, which removes the cold geometric error and the
+/// backlash. Drift target: the channel's sample minus its first sample, with
+/// position_mm 0 and cycle −1.
+struct ErrorObservation {
+    double time_s = 0;
+    double position_mm = 0;
+    Direction direction = Direction::Positive;
+    int cycle = 0;
+    double error_um = 0;
+};
+
+/// Where and when a model is evaluated: time in the run and axis position.
+struct PredictionPoint {
+    double time_s = 0;
+    double position_mm = 0;
+};
+
+/// A sampled signal with its missing samples removed, time ascending.
+struct Signal {
+    QString name;  ///< channel id or axis column
+    std::vector<double> time_s;
+    std::vector<double> value;
+    bool empty() const { return time_s.empty(); }
+};
+
+/// The rise ΔT = T − T(run start) of one temperature channel over one run.
+struct TemperatureRise {
+    QString channel_id;
+    ChannelRole role = ChannelRole::Other;
+    std::optional<double> position_mm;
+    double reference_C = std::numeric_limits<double>::quiet_NaN();
+    Signal rise_K;
+    /// Why the channel cannot be used in this run (no samples, no reference at
+    /// the run's start); empty when usable.
+    QString unusable;
+};
+
+struct RunData {
+    QString run_id;
+    RunKind kind = RunKind::Moving;
+    QString target_channel;         ///< empty: positioning error
+    double fixed_end_mm = 0;        ///< the screw's fixed end: zero of the position gain
+    std::optional<double> lead_mm;  ///< screw lead, when the campaign has a screw
+    double max_gap_s = 120;         ///< from DatasetOptions
+    std::vector<ErrorObservation> observations;
+    /// Every temperature channel of the campaign, in declaration order.
+    std::vector<TemperatureRise> temperatures;
+    Signal position_mm, feed_mm_min, torque_Nm;  ///< axis columns; empty when not logged
+    Signal spindle_speed_rpm;  ///< the first speed channel; no name when the campaign has none
+    std::vector<MotionSegment> motion;
+
+    /// A positioning error depends on the axis position; a drift channel does not.
+    bool positionDependent() const { return target_channel.isEmpty(); }
+    std::vector<PredictionPoint> observationPoints() const;
+    Eigen::VectorXd observedErrors() const;
+};
+
+struct DatasetResult {
+    std::vector<RunData> runs;  ///< in the order asked for
+    QString error;              ///< names the run and what is wrong; empty on success
+    bool ok() const { return error.isEmpty(); }
+};
+
+/// Builds the model data of the runs. Fails (never throws) on a run that is not
+/// in the campaign, a feed-axis run without positioning data or without cycle 0,
+/// a non-finite measurement, a spindle/ETVE run without a target channel, or a
+/// target that is not a displacement channel.
+DatasetResult buildDataset(const Campaign& campaign, const QStringList& runIds,
+                           const DatasetOptions& options = {});
+
+}  // namespace driftlab::models

@@ -1,0 +1,244 @@
+#include "core/physics/ScrewThermalModel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/physics/NutHeatDeposition.h"
+
+namespace driftlab::physics {
+
+namespace {
+using Kind = EndCondition::Kind;
+}
+
+ScrewThermalModel::ScrewThermalModel(const ScrewThermalParameters& parameters, double initial_C)
+    : parameters_(parameters) {
+    parameters_.validate();
+    if (!std::isfinite(initial_C))
+        throw std::invalid_argument("screw simulation: initial temperature is not finite");
+    n_ = parameters_.cells;
+    dx_ = parameters_.cellWidth_m();
+    const double area = parameters_.area_m2();
+    capacity_J_K_ = parameters_.density_kg_m3 * parameters_.specific_heat_J_kgK * area * dx_;
+    conductance_W_K_ = parameters_.conductivity_W_mK * area / dx_;
+    endConductance_W_K_ = 2 * conductance_W_K_;  // half a cell from centre to face
+    surface_m2_ = parameters_.perimeter_m() * dx_;
+    temperature_.assign(static_cast<std::size_t>(n_), initial_C);
+    reference_ = temperature_;
+    initial_ = temperature_;
+    source_J_.assign(temperature_.size(), 0.0);
+    rhs_.resize(temperature_.size());
+}
+
+void ScrewThermalModel::refactorise(double dt_s, double h_W_m2K) {
+    const std::size_t n = temperature_.size();
+    const double theta = parameters_.theta;
+    std::vector<double> lower(n, -theta * conductance_W_K_);
+    std::vector<double> upper(n, -theta * conductance_W_K_);
+    std::vector<double> diag(n);
+    const double convective = h_W_m2K * surface_m2_;
+    for (std::size_t i = 0; i < n; ++i) {
+        double leaving = convective;
+        leaving += i > 0 ? conductance_W_K_ : 0.0;
+        leaving += i + 1 < n ? conductance_W_K_ : 0.0;
+        diag[i] = capacity_J_K_ / dt_s + theta * leaving;
+    }
+    if (parameters_.fixed_end.kind == Kind::FixedTemperature)
+        diag.front() += theta * endConductance_W_K_;
+    if (parameters_.free_end.kind == Kind::FixedTemperature)
+        diag.back() += theta * endConductance_W_K_;
+    solver_.factorise(lower, diag, upper);
+    factorisedDt_ = dt_s;
+    factorisedH_ = h_W_m2K;
+}
+
+double ScrewThermalModel::collectMotionHeat(const StepConditions& c, double t0, double t1) {
+    const auto& motion = c.motion;
+    if (motionCursor_ >= motion.size() || (motionCursor_ > 0 && motion[motionCursor_].start_s > t0))
+        motionCursor_ = 0;
+    while (motionCursor_ < motion.size() && motion[motionCursor_].end_s <= t0) ++motionCursor_;
+
+    const double length = parameters_.length_m;
+    double speedPowerIntegral = 0;  // ∫ |ω|^m dt, for forced convection
+    for (std::size_t k = motionCursor_; k < motion.size() && motion[k].start_s < t1; ++k) {
+        const MotionSegment& s = motion[k];
+        const double a = std::max(s.start_s, t0);
+        const double b = std::min(s.end_s, t1);
+        if (b <= a) continue;
+        const double span = s.end_s - s.start_s;
+        auto at = [&](double t) {
+            const double axis =
+                span > 0 ? s.from_mm + (s.to_mm - s.from_mm) * (t - s.start_s) / span : s.from_mm;
+            return screwCoordinate_m(axis);
+        };
+        const double from = at(a);
+        const double to = at(b);
+        if (from < 0 || from > length || to < 0 || to > length)
+            throw std::invalid_argument(
+                "screw simulation: motion segment at " + std::to_string(s.start_s) + "–" +
+                std::to_string(s.end_s) + " s puts the nut at " +
+                std::to_string(from < 0 || from > length ? s.from_mm : s.to_mm) +
+                " mm, outside the screw");
+        const double duration = b - a;
+        const double omega = parameters_.screwSpeed_rad_s((to - from) / duration);
+        if (omega == 0) continue;
+        ledger_.nut_J += depositNutHeat(source_J_, dx_, parameters_.nut_length_m, from, to,
+                                        duration, parameters_.nutPower_W(omega));
+        const double bearing = parameters_.c_bearing_W_per_rad_s * omega * duration;
+        source_J_.front() += bearing;
+        source_J_.back() += bearing;
+        ledger_.bearings_J += 2 * bearing;
+        if (parameters_.h1_forced_W_m2K > 0)
+            speedPowerIntegral += std::pow(omega, parameters_.forced_exponent) * duration;
+    }
+    return speedPowerIntegral;
+}
+
+void ScrewThermalModel::step(const StepConditions& c) {
+    if (!(c.dt_s > 0) || !std::isfinite(c.dt_s))
+        throw std::invalid_argument("screw simulation: time step must be positive, got " +
+                                    std::to_string(c.dt_s) + " s");
+    if (!std::isfinite(c.ambient_begin_C) || !std::isfinite(c.ambient_end_C))
+        throw std::invalid_argument("screw simulation: ambient temperature is not finite at " +
+                                    std::to_string(time_s_) + " s");
+    const double t0 = time_s_;
+    const double t1 = t0 + c.dt_s;
+    const double speedPowerIntegral = collectMotionHeat(c, t0, t1);
+
+    const double motor = parameters_.c_motor_W_per_Nm2 * c.mean_torque_squared_Nm2 * c.dt_s;
+    source_J_.front() += motor;
+    ledger_.motor_J += motor;
+    for (const auto* end : {&parameters_.fixed_end, &parameters_.free_end}) {
+        if (end->kind != Kind::HeatFlux) continue;
+        const double q = end->heat_W * c.dt_s;
+        (end == &parameters_.fixed_end ? source_J_.front() : source_J_.back()) += q;
+        ledger_.end_flux_J += q;
+    }
+
+    const double h =
+        parameters_.h_W_m2K + parameters_.h1_forced_W_m2K * speedPowerIntegral / c.dt_s;
+    if (c.dt_s != factorisedDt_ || h != factorisedH_) refactorise(c.dt_s, h);
+
+    const double theta = parameters_.theta;
+    const double explicitPart = 1 - theta;
+    const double H = h * surface_m2_;
+    const double G = conductance_W_K_;
+    const double capacityRate = capacity_J_K_ / c.dt_s;
+    const std::size_t n = temperature_.size();
+    const double* T = temperature_.data();
+    double convectedExplicit = 0;  // Σ H (T − Ta0) at the start of the step
+    for (std::size_t i = 0; i < n; ++i) {
+        double flow = -H * (T[i] - c.ambient_begin_C);
+        if (i > 0) flow += G * (T[i - 1] - T[i]);
+        if (i + 1 < n) flow += G * (T[i + 1] - T[i]);
+        rhs_[i] = capacityRate * T[i] + explicitPart * flow + theta * H * c.ambient_end_C +
+                  source_J_[i] / c.dt_s;
+        convectedExplicit += T[i] - c.ambient_begin_C;
+    }
+    // Fixed-temperature ends: conductance from the end cell to the face.
+    double endsExplicit = 0;
+    auto fixedEnd = [&](const EndCondition& end, std::size_t cell) {
+        if (end.kind != Kind::FixedTemperature) return;
+        const double Ge = endConductance_W_K_;
+        rhs_[cell] +=
+            -explicitPart * Ge * (T[cell] - end.temperature_C) + theta * Ge * end.temperature_C;
+        endsExplicit += Ge * (T[cell] - end.temperature_C);
+    };
+    fixedEnd(parameters_.fixed_end, 0);
+    fixedEnd(parameters_.free_end, n - 1);
+
+    solver_.solve(rhs_.data());
+    temperature_.swap(rhs_);
+
+    // Book the heat that left during the step with the same θ-weighting the
+    // scheme used, so the ledger balances to round-off.
+    double convectedImplicit = 0;
+    for (std::size_t i = 0; i < n; ++i) convectedImplicit += temperature_[i];
+    convectedImplicit -= static_cast<double>(n) * c.ambient_end_C;
+    ledger_.convected_J +=
+        c.dt_s * H * (theta * convectedImplicit + explicitPart * convectedExplicit);
+    double endsImplicit = 0;
+    if (parameters_.fixed_end.kind == Kind::FixedTemperature)
+        endsImplicit +=
+            endConductance_W_K_ * (temperature_.front() - parameters_.fixed_end.temperature_C);
+    if (parameters_.free_end.kind == Kind::FixedTemperature)
+        endsImplicit +=
+            endConductance_W_K_ * (temperature_.back() - parameters_.free_end.temperature_C);
+    ledger_.through_ends_J += c.dt_s * (theta * endsImplicit + explicitPart * endsExplicit);
+
+    std::fill(source_J_.begin(), source_J_.end(), 0.0);
+    time_s_ = t1;
+}
+
+double ScrewThermalModel::temperatureAt_C(double x_m) const {
+    const double u = x_m / dx_ - 0.5;
+    if (u <= 0) return temperature_.front();
+    if (u >= n_ - 1) return temperature_.back();
+    const auto i = static_cast<std::size_t>(u);
+    const double f = u - static_cast<double>(i);
+    return temperature_[i] * (1 - f) + temperature_[i + 1] * f;
+}
+
+double ScrewThermalModel::meanTemperature_C(double from_m, double to_m) const {
+    from_m = std::clamp(from_m, 0.0, parameters_.length_m);
+    to_m = std::clamp(to_m, 0.0, parameters_.length_m);
+    if (to_m - from_m < 1e-12) return temperatureAt_C(from_m);
+    double sum = 0;
+    const int first = std::min(n_ - 1, static_cast<int>(from_m / dx_));
+    const int last = std::min(n_ - 1, static_cast<int>(to_m / dx_));
+    for (int i = first; i <= last; ++i) {
+        const double covered = std::min(to_m, (i + 1) * dx_) - std::max(from_m, i * dx_);
+        if (covered > 0) sum += covered * temperature_[static_cast<std::size_t>(i)];
+    }
+    return sum / (to_m - from_m);
+}
+
+double ScrewThermalModel::temperatureUnderNut_C(double axis_mm) const {
+    const double centre = screwCoordinate_m(axis_mm);
+    const double half = 0.5 * parameters_.nut_length_m;
+    return meanTemperature_C(centre - half, centre + half);
+}
+
+std::vector<double> ScrewThermalModel::expansionPrefix() const {
+    // prefix[i] = ∫ α (T − T_ref) from 0 to the left face of cell i, m.
+    std::vector<double> prefix(temperature_.size() + 1, 0.0);
+    const double scale = parameters_.alpha_per_K * dx_;
+    for (std::size_t i = 0; i < temperature_.size(); ++i)
+        prefix[i + 1] = prefix[i] + scale * (temperature_[i] - reference_[i]);
+    return prefix;
+}
+
+double ScrewThermalModel::cumulativeExpansion_m(double x_m,
+                                                const std::vector<double>& prefix) const {
+    x_m = std::clamp(x_m, 0.0, parameters_.length_m);
+    const int i = std::min(n_ - 1, static_cast<int>(x_m / dx_));
+    const auto cell = static_cast<std::size_t>(i);
+    return prefix[cell] +
+           parameters_.alpha_per_K * (x_m - i * dx_) * (temperature_[cell] - reference_[cell]);
+}
+
+double ScrewThermalModel::thermalError_um(double axis_mm) const {
+    return cumulativeExpansion_m(screwCoordinate_m(axis_mm), expansionPrefix()) * 1e6;
+}
+
+std::vector<double> ScrewThermalModel::thermalError_um(const std::vector<double>& axis_mm) const {
+    const auto prefix = expansionPrefix();
+    std::vector<double> error(axis_mm.size());
+    for (std::size_t k = 0; k < axis_mm.size(); ++k)
+        error[k] = cumulativeExpansion_m(screwCoordinate_m(axis_mm[k]), prefix) * 1e6;
+    return error;
+}
+
+void ScrewThermalModel::resetReference() {
+    reference_ = temperature_;
+}
+
+double ScrewThermalModel::storedEnergy_J() const {
+    double sum = 0;
+    for (std::size_t i = 0; i < temperature_.size(); ++i) sum += temperature_[i] - initial_[i];
+    return capacity_J_K_ * sum;
+}
+
+}  // namespace driftlab::physics

@@ -1,0 +1,110 @@
+#pragma once
+// One-dimensional transient conduction along the ball screw (DESIGN.md
+// section 4), finite volumes with implicit θ-stepping:
+//
+//   ρ c A ∂T/∂t = k A ∂²T/∂x² − h P (T − T_amb(t)) + q_nut(x,t) + q_bearings(x,t)
+//
+// It runs online: step() advances by one sample interval in O(cells), so a
+// live observer never re-simulates from zero. Every joule is booked (heat in,
+// stored, convected, through fixed-temperature ends) so a run can be checked
+// for energy balance.
+
+#include <span>
+#include <vector>
+
+#include "core/domain/Run.h"
+#include "core/physics/ScrewThermalParameters.h"
+#include "core/physics/TridiagonalSolver.h"
+
+namespace driftlab::physics {
+
+/// What acts on the screw during one step.
+struct StepConditions {
+    double dt_s = 1;
+    double ambient_begin_C = 20;  ///< ambient at the start of the step
+    double ambient_end_C = 20;    ///< and at its end (linear in between)
+    /// The axis motion (axis mm, absolute s); only the part inside the step is
+    /// used, so the whole run's segments may be passed every step.
+    std::span<const MotionSegment> motion;
+    double mean_torque_squared_Nm2 = 0;  ///< mean of torque² over the step, motor heat
+};
+
+/// Joules since construction. Balance: heat_in = stored + convected + through_ends.
+struct EnergyLedger {
+    double nut_J = 0;
+    double bearings_J = 0;
+    double motor_J = 0;
+    double end_flux_J = 0;      ///< HeatFlux end conditions
+    double convected_J = 0;     ///< to ambient, positive out of the screw
+    double through_ends_J = 0;  ///< out through FixedTemperature ends
+    double heatIn_J() const { return nut_J + bearings_J + motor_J + end_flux_J; }
+};
+
+class ScrewThermalModel {
+public:
+    /// Uniform initial temperature. Throws std::invalid_argument on parameters
+    /// that cannot be simulated.
+    ScrewThermalModel(const ScrewThermalParameters& parameters, double initial_C);
+
+    /// Advances by conditions.dt_s. Throws std::invalid_argument on a
+    /// non-positive or non-finite step or ambient, or motion that leaves the
+    /// screw (nut centre beyond either end).
+    void step(const StepConditions& conditions);
+
+    double time_s() const { return time_s_; }
+    const ScrewThermalParameters& parameters() const { return parameters_; }
+    /// Cell temperatures, cell i centred at (i + ½)·Δx from the fixed end.
+    const std::vector<double>& temperatures_C() const { return temperature_; }
+    double cellCentre_m(int cell) const { return (cell + 0.5) * dx_; }
+
+    /// Temperature at a screw coordinate, linear between cell centres.
+    double temperatureAt_C(double x_m) const;
+    /// Mean temperature over [from, to] (screw coordinates): the nut-flank
+    /// sensor reads the screw under the nut.
+    double meanTemperature_C(double from_m, double to_m) const;
+    /// The screw under the nut centred at an axis position.
+    double temperatureUnderNut_C(double axis_mm) const;
+
+    /// Thermal error at an axis position: E = ∫ α (T − T_ref) ds from the fixed
+    /// end, µm. T_ref is the initial field (or the one set by resetReference()).
+    double thermalError_um(double axis_mm) const;
+    /// Many positions at once: one O(cells) prefix sum, then O(1) per position.
+    std::vector<double> thermalError_um(const std::vector<double>& axis_mm) const;
+    void resetReference();
+
+    double screwCoordinate_m(double axis_mm) const {
+        return (axis_mm - parameters_.fixed_end_axis_mm) * 1e-3;
+    }
+    /// Heat stored since construction, J (the ledger's "stored").
+    double storedEnergy_J() const;
+    const EnergyLedger& energy() const { return ledger_; }
+
+private:
+    void refactorise(double dt_s, double h_W_m2K);
+    double collectMotionHeat(const StepConditions& c, double t0, double t1);
+    double cumulativeExpansion_m(double x_m, const std::vector<double>& prefix) const;
+    std::vector<double> expansionPrefix() const;
+
+    ScrewThermalParameters parameters_;
+    int n_;
+    double dx_;
+    double capacity_J_K_;        ///< per cell
+    double conductance_W_K_;     ///< between neighbouring cells
+    double endConductance_W_K_;  ///< cell centre to a fixed-temperature end face
+    double surface_m2_;          ///< per cell
+    double time_s_ = 0;
+    std::size_t motionCursor_ = 0;
+
+    std::vector<double> temperature_;
+    std::vector<double> reference_;  ///< for the thermal error
+    std::vector<double> initial_;    ///< for the energy ledger
+    std::vector<double> source_J_;   ///< heat deposited in the current step, per cell
+    std::vector<double> rhs_;
+
+    TridiagonalSolver solver_;
+    double factorisedDt_ = -1;
+    double factorisedH_ = -1;
+    EnergyLedger ledger_;
+};
+
+}  // namespace driftlab::physics
