@@ -65,10 +65,14 @@ Campaign readBundleOrFail(const QString& path) {
 
 namespace {
 bool g_progressLineOpen = false;
-}
+QString g_progressShown;  ///< "label: percent" last written, to rewrite only on change
+}  // namespace
 
 bool printProgress(const QString& label, double fraction) {
-    std::fprintf(stderr, "\r%s: %3d%%", qPrintable(label), int(fraction * 100 + 0.5));
+    const QString shown = QStringLiteral("%1: %2%").arg(label).arg(int(fraction * 100 + 0.5), 3);
+    if (shown == g_progressShown) return true;
+    g_progressShown = shown;
+    std::fprintf(stderr, "\r%s", qPrintable(shown));
     g_progressLineOpen = fraction < 1.0;
     if (!g_progressLineOpen) std::fputc('\n', stderr);
     return true;

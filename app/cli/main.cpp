@@ -1,6 +1,9 @@
 // driftlab-cli: the headless DriftLab. Progress on stderr, results on stdout
 // (JSON with --json), non-zero exit and a one-line reason on failure.
-#include <QCoreApplication>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <QApplication>
+
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -11,10 +14,19 @@ namespace driftlab::cli {
 int importCommand(const QStringList& args);
 int exportCommand(const QStringList& args);
 int infoCommand(const QStringList& args);
+int simulateCommand(const QStringList& args);
 }  // namespace driftlab::cli
 
 int main(int argc, char** argv) {
-    QCoreApplication app(argc, argv);
+    // Plots are rendered offscreen; the CLI never opens a window.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    // Qt wants a private runtime folder; make it as Qt would, without its warning.
+    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+        const QByteArray runtime = QByteArray("/tmp/runtime-") + QByteArray::number(getuid());
+        mkdir(runtime.constData(), 0700);
+        qputenv("XDG_RUNTIME_DIR", runtime);
+    }
+    QApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("driftlab-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIFTLAB_VERSION));
     using namespace driftlab::cli;
@@ -26,6 +38,9 @@ int main(int argc, char** argv) {
              {exportCommand, "export --db FILE --campaign ID --out DIR   write a bundle back"}},
             {QStringLiteral("info"),
              {infoCommand, "info BUNDLE                 runs, channels, counts"}},
+            {QStringLiteral("simulate"),
+             {simulateCommand,
+              "simulate --out DIR [--effect ID=VALUE]... [--seed N]   a campaign from the rig"}},
         };
     QStringList args = app.arguments();
     if (args.size() < 2 || !commands.count(args[1])) {

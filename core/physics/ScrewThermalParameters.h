@@ -35,7 +35,7 @@ struct ScrewThermalParameters {
     // Heat sources. ω is the screw speed in rad/s, ω = 2π·v/lead.
     double c_nut_W_per_rad_s = 0.11;      ///< nut friction power Q = c_nut·|ω| (n = 1)
     double nut_heat_exponent = 1;         ///< Q = c_nut·ω_ref·(|ω|/ω_ref)^n, equal at ω_ref
-    double c_bearing_W_per_rad_s = 0.03;  ///< into each end cell, Q_b = c_b·|ω|
+    double c_bearing_W_per_rad_s = 0.02;  ///< into each end cell, Q_b = c_b·|ω|
     double c_motor_W_per_Nm2 = 0;         ///< motor heat into the fixed end, ∝ torque²
 
     // Convection to ambient: h = h0 + h1·|ω|^m (h1 = 0 in the base model).

@@ -4,37 +4,14 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 
 #include "core/bundle/BundleReader.h"
+#include "tests/cli/CliRunner.h"
 #include "tests/core/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
-
-namespace {
-
-struct CliResult {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-CliResult runCli(const QStringList& args) {
-    QProcess p;
-    p.start(QStringLiteral(DRIFTLAB_CLI), args);
-    EXPECT_TRUE(p.waitForFinished(120'000)) << "driftlab-cli " << qPrintable(args.join(' '));
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
-
-/// The last line on stderr, where the one-line reason of a failure stands.
-QByteArray reason(const QByteArray& err) {
-    return err.trimmed().split('\n').last();
-}
-
-}  // namespace
 
 TEST(Cli, infoJsonDescribesRunsAndChannels) {
     CliResult r = runCli({QStringLiteral("info"), exampleBundlePath(), QStringLiteral("--json")});

@@ -82,6 +82,8 @@ bool saveCurvesPng(const CurvePlot& plot, const QString& path, QString* error, Q
     }
     p.legend->setVisible(n > 1 && n <= 16);
     p.legend->setFont(QFont(QStringLiteral("sans"), 8));
+    // Thermal errors grow with position and time: the top left is the free corner.
+    p.axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
     p.rescaleAxes();
     p.xAxis->scaleRange(1.02, p.xAxis->range().center());
     p.yAxis->scaleRange(1.08, p.yAxis->range().center());

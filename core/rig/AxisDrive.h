@@ -1,0 +1,36 @@
+#pragma once
+// Motor torque of the feed drive from the motion: Coulomb friction and viscous
+// drag while moving, inertia torque while reversing. Used for the logged
+// torque channel and for the motor heat (∝ torque²) the rig can hide.
+
+#include <random>
+#include <span>
+
+#include "core/domain/Run.h"
+#include "core/rig/RigSpec.h"
+
+namespace driftlab::rig {
+
+class AxisDrive {
+public:
+    AxisDrive(const AxisDriveSpec& spec, double lead_mm, unsigned seed)
+        : spec_(spec), lead_mm_(lead_mm), rng_(seed) {}
+
+    /// ∫ torque² dt over [t0, t1], N²·m²·s.
+    double torqueSquaredIntegral(std::span<const MotionSegment> motion, double t0, double t1);
+    /// The logged torque at a time, with noise, N·m.
+    double loggedTorque_Nm(std::span<const MotionSegment> motion, double time_s);
+
+private:
+    double speed_rad_s(const MotionSegment& s) const;  ///< signed
+    double steadyTorque_Nm(double omega) const;
+    std::size_t segmentAt(std::span<const MotionSegment> motion, double time_s);
+
+    AxisDriveSpec spec_;
+    double lead_mm_;
+    std::mt19937_64 rng_;
+    std::normal_distribution<double> noise_{0.0, 1.0};
+    std::size_t cursor_ = 0;
+};
+
+}  // namespace driftlab::rig

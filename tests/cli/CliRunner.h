@@ -1,0 +1,29 @@
+#pragma once
+// Runs driftlab-cli as a user does: a real process, its exit code, stdout and stderr.
+#include <gtest/gtest.h>
+
+#include <QProcess>
+#include <QStringList>
+
+namespace driftlab::test {
+
+struct CliResult {
+    int exitCode = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+inline CliResult runCli(const QStringList& args) {
+    QProcess p;
+    p.start(QStringLiteral(DRIFTLAB_CLI), args);
+    EXPECT_TRUE(p.waitForFinished(300'000)) << "driftlab-cli " << qPrintable(args.join(' '));
+    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
+            p.readAllStandardError()};
+}
+
+/// The last line on stderr, where the one-line reason of a failure stands.
+inline QByteArray reason(const QByteArray& err) {
+    return err.trimmed().split('\n').last();
+}
+
+}  // namespace driftlab::test
