@@ -15,6 +15,8 @@ int importCommand(const QStringList& args);
 int exportCommand(const QStringList& args);
 int infoCommand(const QStringList& args);
 int simulateCommand(const QStringList& args);
+int fitCommand(const QStringList& args);
+int compareCommand(const QStringList& args);
 }  // namespace driftlab::cli
 
 int main(int argc, char** argv) {
@@ -41,6 +43,10 @@ int main(int argc, char** argv) {
             {QStringLiteral("simulate"),
              {simulateCommand,
               "simulate --out DIR [--effect ID=VALUE]... [--seed N]   a campaign from the rig"}},
+            {QStringLiteral("fit"),
+             {fitCommand, "fit BUNDLE --model NAME [--train R,..] [--test R,..] [--target CH]"}},
+            {QStringLiteral("compare"),
+             {compareCommand, "compare BUNDLE              every model, cross-state matrix"}},
         };
     QStringList args = app.arguments();
     if (args.size() < 2 || !commands.count(args[1])) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/models/ExponentialModel.h"
+#include "core/models/HeatTransferModel.h"
 #include "core/models/MlrModel.h"
 #include "core/models/PolyPositionModel.h"
 #include "core/models/SensorlessModel.h"
@@ -14,12 +15,13 @@ namespace {
 
 using Maker = std::function<std::unique_ptr<ThermalErrorModel>()>;
 
-/// Every model, once. A new model (the heat-transfer simulation) is one more line.
+/// Every model, once. A new model is one more line.
 const std::vector<std::pair<QString, Maker>>& registry() {
     static const std::vector<std::pair<QString, Maker>> models{
         {QStringLiteral("mlr"), [] { return std::make_unique<MlrModel>(); }},
         {QStringLiteral("poly-position"), [] { return std::make_unique<PolyPositionModel>(); }},
         {QStringLiteral("exponential"), [] { return std::make_unique<ExponentialModel>(); }},
+        {QStringLiteral("heat-transfer"), [] { return std::make_unique<HeatTransferModel>(); }},
         {QStringLiteral("sensorless"), [] { return std::make_unique<SensorlessModel>(); }},
     };
     return models;

@@ -220,6 +220,9 @@ RunData runData(const Campaign& campaign, const Run& run, const DatasetOptions& 
         data.fixed_end_mm = campaign.screw->fixed_end_mm;
         data.lead_mm = campaign.screw->lead_mm;
     }
+    data.screw = campaign.screw;
+    data.nut_length_mm = campaign.nut_length_mm;
+    data.interferometer = campaign.interferometer;
     for (const Channel& channel : campaign.channels) {
         if (channel.quantity == Quantity::Temperature)
             data.temperatures.push_back(temperatureRise(run, channel, options));

@@ -71,7 +71,10 @@ struct RunData {
     QString target_channel;         ///< empty: positioning error
     double fixed_end_mm = 0;        ///< the screw's fixed end: zero of the position gain
     std::optional<double> lead_mm;  ///< screw lead, when the campaign has a screw
-    double max_gap_s = 120;         ///< from DatasetOptions
+    std::optional<Screw> screw;     ///< the campaign's screw, for the physics models
+    std::optional<double> nut_length_mm;
+    std::optional<Interferometer> interferometer;
+    double max_gap_s = 120;  ///< from DatasetOptions
     std::vector<ErrorObservation> observations;
     /// Every temperature channel of the campaign, in declaration order.
     std::vector<TemperatureRise> temperatures;

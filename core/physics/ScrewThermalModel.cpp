@@ -56,7 +56,12 @@ void ScrewThermalModel::refactorise(double dt_s, double h_W_m2K) {
 
 double ScrewThermalModel::collectMotionHeat(const StepConditions& c, double t0, double t1) {
     const auto& motion = c.motion;
-    if (motionCursor_ >= motion.size() || (motionCursor_ > 0 && motion[motionCursor_].start_s > t0))
+    // Segments are in time order, so the cursor stays valid while the one
+    // before it has ended. (Testing the cursor's own start instead rescanned
+    // the whole list on every step of a gap between segments or after the
+    // last one: quadratic in the run length.)
+    if (motionCursor_ > motion.size() ||
+        (motionCursor_ > 0 && motion[motionCursor_ - 1].end_s > t0))
         motionCursor_ = 0;
     while (motionCursor_ < motion.size() && motion[motionCursor_].end_s <= t0) ++motionCursor_;
 
@@ -105,7 +110,17 @@ void ScrewThermalModel::step(const StepConditions& c) {
                                     std::to_string(time_s_) + " s");
     const double t0 = time_s_;
     const double t1 = t0 + c.dt_s;
-    const double speedPowerIntegral = collectMotionHeat(c, t0, t1);
+    // Motion is checked while its heat is deposited: a refused step must not
+    // leave heat behind for the next one, nor in the ledger.
+    const EnergyLedger ledgerBefore = ledger_;
+    double speedPowerIntegral = 0;
+    try {
+        speedPowerIntegral = collectMotionHeat(c, t0, t1);
+    } catch (...) {
+        ledger_ = ledgerBefore;
+        std::fill(source_J_.begin(), source_J_.end(), 0.0);
+        throw;
+    }
 
     const double motor = parameters_.c_motor_W_per_Nm2 * c.mean_torque_squared_Nm2 * c.dt_s;
     source_J_.front() += motor;

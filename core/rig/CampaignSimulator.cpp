@@ -62,6 +62,11 @@ struct RunContext {
     double doneBefore_s;
 };
 
+/// Bearing-seat sensors sit 2.5 mm inside the screw ends.
+double bearingSeat_mm(const physics::ScrewThermalParameters& p, bool fixedEnd) {
+    return fixedEnd ? p.fixed_end_axis_mm + 2.5 : p.fixed_end_axis_mm + p.length_m * 1e3 - 2.5;
+}
+
 void validateSpec(const RigSpec& spec, const physics::ScrewThermalParameters& screw) {
     screw.validate();
     if (spec.runs.empty() && !spec.spindle_run)
@@ -176,12 +181,15 @@ Run simulateMovingRun(const RunContext& ctx, const MovingStateRun& state, unsign
     const int feedColumn = run.samples.columnIndex(kFeedColumn);
     const int torqueColumn = run.samples.columnIndex(kTorqueColumn);
 
+    const double fixedSeat_mm = bearingSeat_mm(ctx.screw, true);
+    const double freeSeat_mm = bearingSeat_mm(ctx.screw, false);
     double lastSample_s = 0;
     auto logSample = [&](double t) {
         const AxisState axis = axisStateAt(programme.motion, t);
+        // Bearing-seat sensors read the screw where they sit (DESIGN.md §4).
         const double truth[] = {screw.temperatureUnderNut_C(axis.position_mm),
-                                screw.temperatures_C().front(),
-                                screw.temperatures_C().back(),
+                                screw.temperatureAt_C(screw.screwCoordinate_m(fixedSeat_mm)),
+                                screw.temperatureAt_C(screw.screwCoordinate_m(freeSeat_mm)),
                                 room.at(t),
                                 air.value_C,
                                 structure.value_C};
@@ -279,8 +287,8 @@ std::vector<Channel> rigChannels(const RigSpec& spec, const physics::ScrewTherma
         return Channel{id, Quantity::Temperature, role, QString::fromLatin1(where), position_mm,
                        {}};
     };
-    const double fixedSeat = p.fixed_end_axis_mm + 2.5;
-    const double freeSeat = p.fixed_end_axis_mm + p.length_m * 1e3 - 2.5;
+    const double fixedSeat = bearingSeat_mm(p, true);
+    const double freeSeat = bearingSeat_mm(p, false);
     return {channel(n.nut, ChannelRole::Nut, "nut flank"),
             channel(n.bearing_fixed, ChannelRole::Bearing, "fixed bearing seat", fixedSeat),
             channel(n.bearing_free, ChannelRole::Bearing, "support bearing seat", freeSeat),

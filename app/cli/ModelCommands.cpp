@@ -1,0 +1,211 @@
+// fit and compare: thermal-error models on a campaign (DESIGN.md sections 5, 9).
+#include <QJsonArray>
+#include <cmath>
+
+#include "app/cli/CliCommon.h"
+#include "core/models/ModelFactory.h"
+#include "core/models/ModelScore.h"
+#include "db/ModelFitStore.h"
+
+namespace driftlab::cli {
+namespace {
+
+/// NaN (not determined) is JSON null.
+QJsonValue number(double value) {
+    return std::isfinite(value) ? QJsonValue(value) : QJsonValue();
+}
+
+QStringList runList(const QString& text) {
+    QStringList ids;
+    for (const QString& id : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) ids << id.trimmed();
+    return ids;
+}
+
+/// Runs whose thermal error a model can be fitted to: feed-axis runs, or with
+/// a drift target the runs that log that channel.
+QStringList modelledRuns(const Campaign& campaign, const QString& target) {
+    QStringList ids;
+    for (const Run& run : campaign.runs) {
+        if (target.isEmpty() ? isFeedAxisRun(run.kind) && !run.positioning.empty()
+                             : run.samples.columnIndex(target) >= 0 && !isFeedAxisRun(run.kind))
+            ids << run.id;
+    }
+    return ids;
+}
+
+std::vector<models::RunData> dataset(const Campaign& campaign, const QStringList& runs,
+                                     const QString& target) {
+    models::DatasetOptions options;
+    options.target_channel = target;
+    models::DatasetResult result = models::buildDataset(campaign, runs, options);
+    if (!result.ok()) throw CliError(result.error);
+    return std::move(result.runs);
+}
+
+const QCommandLineOption kTargetOption{
+    QStringLiteral("target"),
+    QStringLiteral(
+        "A drift channel to model (spindle/ETVE runs) instead of the positioning error."),
+    QStringLiteral("CH")};
+
+void storeFit(const QCommandLineParser& parser, const db::ModelFitRecord& record) {
+    if (!parser.isSet(QStringLiteral("db"))) return;
+    QString error;
+    auto store = db::CampaignStore::open(parser.value(QStringLiteral("db")), &error);
+    if (!store) throw CliError(error);
+    if (!db::storeModelFit(*store, parser.value(QStringLiteral("campaign")).toLongLong(), record,
+                           &error))
+        throw CliError(error);
+}
+
+}  // namespace
+
+int fitCommand(const QStringList& args) {
+    QCommandLineParser parser;
+    const QCommandLineOption model{
+        QStringLiteral("model"), QStringLiteral("Model: %1.").arg(models::modelNames().join(", ")),
+        QStringLiteral("NAME")};
+    const QCommandLineOption train{QStringLiteral("train"),
+                                   QStringLiteral("Training runs (default: the first)."),
+                                   QStringLiteral("R,..")};
+    const QCommandLineOption test{QStringLiteral("test"),
+                                  QStringLiteral("Test runs (default: every other run)."),
+                                  QStringLiteral("R,..")};
+    parseArguments(parser, args, campaignSourceOptions() << model << train << test << kTargetOption,
+                   QStringLiteral("BUNDLE"));
+    auto m = models::makeModel(parser.value(model));
+    if (!m)
+        throw CliError(QStringLiteral("--model: '%1' is not a model (%2)")
+                           .arg(parser.value(model), models::modelNames().join(", ")),
+                       2);
+    const Campaign campaign = loadCampaignSource(parser);
+    const QString target = parser.value(kTargetOption);
+    const QStringList all = modelledRuns(campaign, target);
+    QStringList trainRuns = parser.isSet(train) ? runList(parser.value(train)) : all.mid(0, 1);
+    QStringList testRuns = parser.isSet(test) ? runList(parser.value(test)) : QStringList();
+    if (!parser.isSet(test))
+        for (const QString& id : all)
+            if (!trainRuns.contains(id)) testRuns << id;
+    if (trainRuns.isEmpty()) throw CliError(QStringLiteral("no run to fit on"));
+
+    printProgress(QStringLiteral("fitting ") + m->name(), 0);
+    const models::FitSummary fit = m->fit(dataset(campaign, trainRuns, target));
+    printProgress(QStringLiteral("fitting ") + m->name(), 1);
+    if (!fit.success) throw CliError(fit.message);
+
+    QJsonObject parameters;
+    for (const auto& [name, p] : fit.parameters)
+        parameters[name] = QJsonObject{{QStringLiteral("value"), number(p.value)},
+                                       {QStringLiteral("sigma"), number(p.sigma)},
+                                       {QStringLiteral("unit"), p.unit}};
+    QJsonObject metrics;
+    for (const auto& [name, value] : fit.metrics) metrics[name] = number(value);
+    metrics[QStringLiteral("train_rms_um")] = number(fit.rms_um);
+    metrics[QStringLiteral("iterations")] = fit.iterations;
+    QJsonObject testScore;
+    if (!testRuns.isEmpty()) {
+        const models::Score score = models::scoreModel(*m, dataset(campaign, testRuns, target));
+        if (!score.ok()) throw CliError(score.error);
+        testScore = {{QStringLiteral("rms_um"), number(score.rms_um)},
+                     {QStringLiteral("peak_um"), number(score.peak_um)},
+                     {QStringLiteral("reduction"), number(score.reduction)},
+                     {QStringLiteral("uncompensated_rms_um"), number(score.uncompensated_rms_um)}};
+        metrics[QStringLiteral("test")] = testScore;
+    }
+    storeFit(parser, {0, m->name(), target.isEmpty() ? QStringLiteral("positioning") : target,
+                      trainRuns, testRuns, parameters, metrics});
+
+    if (parser.isSet(QStringLiteral("json"))) {
+        printJson({{QStringLiteral("model"), m->name()},
+                   {QStringLiteral("train_runs"), QJsonArray::fromStringList(trainRuns)},
+                   {QStringLiteral("test_runs"), QJsonArray::fromStringList(testRuns)},
+                   {QStringLiteral("parameters"), parameters},
+                   {QStringLiteral("test"), testScore},
+                   {QStringLiteral("fit"),
+                    QJsonObject{{QStringLiteral("message"), fit.message},
+                                {QStringLiteral("rms_um"), number(fit.rms_um)},
+                                {QStringLiteral("notes"), QJsonArray::fromStringList(fit.notes)},
+                                {QStringLiteral("metrics"), metrics}}}});
+        return 0;
+    }
+    printLine(fit.message);
+    for (const auto& [name, p] : fit.parameters)
+        printLine(QStringLiteral("  %1 = %2 ± %3 %4")
+                      .arg(name, -12)
+                      .arg(p.value, 0, 'g', 5)
+                      .arg(std::isfinite(p.sigma) ? QString::number(p.sigma, 'g', 2)
+                                                  : QStringLiteral("?"))
+                      .arg(p.unit));
+    for (const QString& note : fit.notes) printLine(QStringLiteral("  note: ") + note);
+    if (!testScore.isEmpty())
+        printLine(
+            QStringLiteral("test on %1: RMS %2 µm, peak %3 µm, %4 % of the thermal error removed")
+                .arg(testRuns.join(QLatin1Char(',')))
+                .arg(testScore[QStringLiteral("rms_um")].toDouble(), 0, 'f', 2)
+                .arg(testScore[QStringLiteral("peak_um")].toDouble(), 0, 'f', 2)
+                .arg(100 * testScore[QStringLiteral("reduction")].toDouble(), 0, 'f', 1));
+    return 0;
+}
+
+int compareCommand(const QStringList& args) {
+    QCommandLineParser parser;
+    const QCommandLineOption only{QStringLiteral("models"),
+                                  QStringLiteral("Models to compare (default: all)."),
+                                  QStringLiteral("NAME,..")};
+    parseArguments(parser, args, campaignSourceOptions() << only << kTargetOption,
+                   QStringLiteral("BUNDLE"));
+    const Campaign campaign = loadCampaignSource(parser);
+    const QString target = parser.value(kTargetOption);
+    const QStringList runs = modelledRuns(campaign, target);
+    const auto data = dataset(campaign, runs, target);
+    QStringList names = parser.isSet(only) ? runList(parser.value(only)) : models::modelNames();
+    // The heat-transfer model predicts the screw; it has nothing to say on a drift channel.
+    if (!target.isEmpty() && !parser.isSet(only)) names.removeAll(QStringLiteral("heat-transfer"));
+
+    QJsonObject modelsJson;
+    for (int k = 0; k < names.size(); ++k) {
+        if (!models::makeModel(names[k]))
+            throw CliError(QStringLiteral("--models: '%1' is not a model").arg(names[k]), 2);
+        const models::CrossStateMatrix matrix =
+            models::crossStateMatrix(names[k], data, [&](double f) {
+                return printProgress(QStringLiteral("comparing"), (k + f) / names.size());
+            });
+        QJsonArray rows;
+        for (const auto& row : matrix.rms_um) {
+            QJsonArray r;
+            for (double v : row) r << number(v);
+            rows << r;
+        }
+        modelsJson[names[k]] =
+            QJsonObject{{QStringLiteral("rms_um"), rows},
+                        {QStringLiteral("errors"), QJsonArray::fromStringList(matrix.errors)}};
+    }
+    printProgress(QStringLiteral("comparing"), 1);
+    if (parser.isSet(QStringLiteral("json"))) {
+        printJson({{QStringLiteral("runs"), QJsonArray::fromStringList(runs)},
+                   {QStringLiteral("models"), modelsJson}});
+        return 0;
+    }
+    printLine(
+        QStringLiteral("RMS residual (µm) on each run (columns) of the model fitted on "
+                       "each run (rows)"));
+    for (const QString& name : names) {
+        printLine(QStringLiteral("\n%1").arg(name));
+        QString header = QStringLiteral("%1").arg(QString(), -8);
+        for (const QString& r : runs) header += QStringLiteral("%1").arg(r, 9);
+        printLine(header);
+        const QJsonArray rows = modelsJson[name].toObject()[QStringLiteral("rms_um")].toArray();
+        for (int i = 0; i < rows.size(); ++i) {
+            QString line = QStringLiteral("%1").arg(runs[i], -8);
+            for (const auto& v : rows[i].toArray())
+                line += v.isNull() ? QStringLiteral("%1").arg(QStringLiteral("—"), 9)
+                                   : QStringLiteral("%1").arg(v.toDouble(), 9, 'f', 2);
+            printLine(line);
+        }
+        for (const auto& e : modelsJson[name].toObject()[QStringLiteral("errors")].toArray())
+            printLine(QStringLiteral("  ") + e.toString());
+    }
+    return 0;
+}
+
+}  // namespace driftlab::cli

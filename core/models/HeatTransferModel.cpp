@@ -1,0 +1,238 @@
+#include "core/models/HeatTransferModel.h"
+
+#include <ceres/ceres.h>
+
+#include <Eigen/SVD>
+#include <chrono>
+#include <cmath>
+
+#include "core/models/ModelError.h"
+
+namespace driftlab::models {
+namespace {
+
+/// Huber on a residual in σ units, as a residual whose square is 2ρ(r²): one
+/// residual block holds the whole simulation, so Ceres' per-block LossFunction
+/// would be robust per run, not per reading.
+double robust(double r, double delta) {
+    const double a = std::abs(r);
+    return a <= delta ? r : std::copysign(std::sqrt(2 * delta * a - delta * delta), r);
+}
+
+struct JointResiduals {
+    const std::function<bool(const double*, double*)> evaluate;
+    bool operator()(double const* const* parameters, double* residuals) const {
+        return evaluate(parameters[0], residuals);
+    }
+};
+
+/// What the data cannot separate: the parameters of the weakest direction of
+/// the scaled Jacobian.
+QString unidentifiable(const Eigen::MatrixXd& jacobian, const std::vector<FreeParameter>& names,
+                       const std::vector<double>& values) {
+    Eigen::MatrixXd scaled = jacobian;
+    for (Eigen::Index c = 0; c < scaled.cols(); ++c)
+        scaled.col(c) *= std::max(std::abs(values[std::size_t(c)]), 1e-12);
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeThinV);
+    const Eigen::VectorXd weakest = svd.matrixV().col(svd.matrixV().cols() - 1);
+    QStringList involved;
+    for (Eigen::Index c = 0; c < weakest.size(); ++c)
+        if (std::abs(weakest[c]) > 0.3) involved << names[std::size_t(c)].name;
+    return involved.join(QStringLiteral(" and "));
+}
+
+}  // namespace
+
+ScrewModelVariant baseScrewModel(bool material) {
+    ScrewModelVariant v;
+    v.parameters = {{QStringLiteral("c_nut"), QStringLiteral("W/(rad/s)"), 0.05, 0, 2},
+                    {QStringLiteral("c_b"), QStringLiteral("W/(rad/s)"), 0.05, 0, 1},
+                    {QStringLiteral("h"), QStringLiteral("W/(m²·K)"), 8, 0.5, 200}};
+    if (material) {
+        v.parameters.push_back(
+            {QStringLiteral("rho_c"), QStringLiteral("J/(m³·K)"), 3.6e6, 1e6, 1e7});
+        v.parameters.push_back({QStringLiteral("k"), QStringLiteral("W/(m·K)"), 45, 5, 200});
+    }
+    v.physics = [material](const double* p, physics::ScrewThermalParameters& s) {
+        s.c_nut_W_per_rad_s = p[0];
+        s.c_bearing_W_per_rad_s = p[1];
+        s.h_W_m2K = p[2];
+        if (material) {
+            s.specific_heat_J_kgK = p[3] / s.density_kg_m3;
+            s.conductivity_W_mK = p[4];
+        }
+    };
+    return v;
+}
+
+HeatTransferModel::HeatTransferModel(HeatTransferOptions options, ScrewModelVariant variant)
+    : options_(options), variant_(std::move(variant)) {}
+
+QString HeatTransferModel::describe() const {
+    return QStringLiteral(
+               "1-D conduction along the screw, nut and bearings heating in "
+               "proportion to speed, convection to the ambient channel; %1 "
+               "identified from screw temperatures and positioning errors")
+        .arg([&] {
+            QStringList n;
+            for (const auto& p : variant_.parameters) n << p.name;
+            return n.join(QStringLiteral(", "));
+        }());
+}
+
+ScrewRunOutputs HeatTransferModel::simulateWith(const double* values, const RunData& run,
+                                                const ScrewRunInputs& inputs,
+                                                const std::vector<PredictionPoint>& at) const {
+    physics::ScrewThermalParameters p = screwParameters(run, {}, options_.cells);
+    p.density_kg_m3 = run.screw->density_kg_m3;
+    p.specific_heat_J_kgK = run.screw->specific_heat_J_kgK;
+    p.conductivity_W_mK = run.screw->conductivity_W_mK;
+    variant_.physics(values, p);
+    ScrewRunOutputs out = simulateScrewRun(inputs, p, at);
+    if (variant_.readings) variant_.readings(values, inputs, at, out);
+    return out;
+}
+
+ScrewRunOutputs HeatTransferModel::simulate(const RunData& run,
+                                            const std::vector<PredictionPoint>& at) const {
+    if (values_.empty()) throw ModelError(QStringLiteral("model 'heat-transfer' is not fitted"));
+    return simulateWith(values_.data(), run, prepareScrewRun(run, options_.dt_s, name()), at);
+}
+
+Eigen::VectorXd HeatTransferModel::predictRun(const RunData& run,
+                                              const std::vector<PredictionPoint>& at) const {
+    const auto out = simulate(run, at);
+    return Eigen::Map<const Eigen::VectorXd>(out.error_um.data(),
+                                             Eigen::Index(out.error_um.size()));
+}
+
+FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
+    for (const RunData& run : training)
+        if (!run.positionDependent())
+            throw ModelError(QStringLiteral("model 'heat-transfer' predicts the positioning error "
+                                            "of the screw, not channel '%1'")
+                                 .arg(run.target_channel));
+    std::vector<ScrewRunInputs> inputs;
+    int residualCount = 0;
+    int temperatureCount = 0;
+    for (const RunData& run : training) {
+        inputs.push_back(prepareScrewRun(run, options_.dt_s, name()));
+        residualCount += int(run.observations.size());
+        if (options_.fit_temperatures)
+            for (const auto& s : inputs.back().sensors) temperatureCount += int(s.time_s.size());
+    }
+    residualCount += temperatureCount;
+    if (residualCount == 0)
+        throw ModelError(
+            QStringLiteral("model 'heat-transfer': the training runs have no readings"));
+
+    const auto& free = variant_.parameters;
+    const int n = int(free.size());
+    std::vector<double> values;
+    for (const auto& p : free) values.push_back(p.initial);
+
+    auto evaluate = [&](const double* p, double* r) {
+        try {
+            int i = 0;
+            for (std::size_t k = 0; k < training.size(); ++k) {
+                const RunData& run = training[k];
+                const auto points = run.observationPoints();
+                const ScrewRunOutputs out = simulateWith(p, run, inputs[k], points);
+                for (std::size_t o = 0; o < points.size(); ++o)
+                    r[i++] = robust(
+                        (run.observations[o].error_um - out.error_um[o]) / options_.error_sigma_um,
+                        options_.huber_sigmas);
+                if (!options_.fit_temperatures) continue;
+                for (std::size_t s = 0; s < inputs[k].sensors.size(); ++s)
+                    for (std::size_t j = 0; j < out.sensor_C[s].size(); ++j)
+                        r[i++] = robust((inputs[k].sensors[s].measured_C[j] - out.sensor_C[s][j]) /
+                                            options_.temperature_sigma_K,
+                                        options_.huber_sigmas);
+            }
+            return true;
+        } catch (const std::invalid_argument&) {
+            return false;  // parameters the physics refuses: Ceres shortens the step
+        }
+    };
+
+    ceres::Problem problem;
+    auto* cost = new ceres::DynamicNumericDiffCostFunction<JointResiduals, ceres::FORWARD>(
+        new JointResiduals{evaluate});
+    cost->AddParameterBlock(n);
+    cost->SetNumResiduals(residualCount);
+    problem.AddResidualBlock(cost, nullptr, values.data());
+    for (int i = 0; i < n; ++i) {
+        problem.SetParameterLowerBound(values.data(), i, free[std::size_t(i)].lower);
+        problem.SetParameterUpperBound(values.data(), i, free[std::size_t(i)].upper);
+    }
+    ceres::Solver::Options solverOptions;
+    solverOptions.linear_solver_type = ceres::DENSE_QR;
+    solverOptions.max_num_iterations = options_.max_iterations;
+    solverOptions.function_tolerance = 1e-10;
+    solverOptions.parameter_tolerance = 1e-9;
+    solverOptions.logging_type = ceres::SILENT;
+    ceres::Solver::Summary solved;
+    const auto started = std::chrono::steady_clock::now();
+    ceres::Solve(solverOptions, &problem, &solved);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (!solved.IsSolutionUsable())
+        throw ModelError(QStringLiteral("model 'heat-transfer': identification failed: %1")
+                             .arg(QString::fromStdString(solved.message)));
+
+    FitSummary summary;
+    summary.iterations = int(solved.iterations.size());
+    summary.metrics[QStringLiteral("final_cost")] = solved.final_cost;
+    summary.metrics[QStringLiteral("initial_cost")] = solved.initial_cost;
+    summary.metrics[QStringLiteral("identification_s")] = seconds;
+    summary.metrics[QStringLiteral("temperature_readings")] = temperatureCount;
+
+    // 1σ from the covariance, scaled by the residual variance (the weights are
+    // nominal noise levels, the fit tells the real ones).
+    const double dof = std::max(1, residualCount - n);
+    const double variance = 2 * solved.final_cost / dof;
+    ceres::Covariance::Options covarianceOptions;
+    covarianceOptions.algorithm_type = ceres::DENSE_SVD;
+    ceres::Covariance covariance(covarianceOptions);
+    std::vector<double> block(std::size_t(n * n), std::nan(""));
+    const std::vector<std::pair<const double*, const double*>> blocks{
+        {values.data(), values.data()}};
+    const bool identifiable =
+        covariance.Compute(blocks, &problem) &&
+        covariance.GetCovarianceBlock(values.data(), values.data(), block.data());
+    if (!identifiable) {
+        ceres::CRSMatrix crs;
+        problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &crs);
+        Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+        for (int row = 0; row < crs.num_rows; ++row)
+            for (int k = crs.rows[std::size_t(row)]; k < crs.rows[std::size_t(row) + 1]; ++k)
+                jacobian(row, crs.cols[std::size_t(k)]) = crs.values[std::size_t(k)];
+        summary.notes << QStringLiteral(
+                             "not identifiable: these runs cannot separate %1; their "
+                             "values are one of many that fit equally well")
+                             .arg(unidentifiable(jacobian, free, values));
+    }
+    for (int i = 0; i < n; ++i) {
+        const auto& p = free[std::size_t(i)];
+        const double sigma =
+            identifiable ? std::sqrt(std::max(0.0, block[std::size_t(i * n + i)] * variance))
+                         : std::nan("");
+        summary.parameters[p.name] = {values[std::size_t(i)], sigma, p.unit};
+        const double span = p.upper - p.lower;
+        if (values[std::size_t(i)] - p.lower < 1e-6 * span ||
+            p.upper - values[std::size_t(i)] < 1e-6 * span)
+            summary.notes << QStringLiteral("%1 = %2 %3 is at its bound")
+                                 .arg(p.name, messageNumber(values[std::size_t(i)]), p.unit);
+    }
+    for (const auto& s : inputs.front().sensors) summary.inputs << s.channel_id;
+    summary.message = QStringLiteral(
+                          "heat-transfer identified on %1 run(s) in %2 iterations "
+                          "(%3 s)")
+                          .arg(training.size())
+                          .arg(summary.iterations)
+                          .arg(seconds, 0, 'f', 2);
+    values_ = values;
+    return summary;
+}
+
+}  // namespace driftlab::models

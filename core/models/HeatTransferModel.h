@@ -1,0 +1,79 @@
+#pragma once
+// heat-transfer: the screw simulation of DESIGN.md section 4 with its heat
+// coefficients identified by Ceres from the temperatures on the screw and the
+// positioning errors jointly. Physics generalises across moving states where
+// regressions on temperatures do not: the headline of the cross-state matrix.
+//
+// The free parameters are data (a ScrewModelVariant), so the diagnosis can
+// refit the same model extended by a candidate effect.
+
+#include <functional>
+
+#include "core/models/ScrewRunSimulation.h"
+#include "core/models/ThermalErrorModel.h"
+
+namespace driftlab::models {
+
+struct FreeParameter {
+    QString name;  ///< as reported: "c_nut", "h", "h1", …
+    QString unit;
+    double initial = 0;
+    double lower = 0;
+    double upper = 0;
+};
+
+/// Which parameters are free and how they enter the simulation and its readings.
+struct ScrewModelVariant {
+    std::vector<FreeParameter> parameters;
+    /// Sets the free values into the simulation's parameters.
+    std::function<void(const double* values, physics::ScrewThermalParameters&)> physics;
+    /// Optional: changes the readings after the simulation (sensor or
+    /// interferometer effects). Points are the thermal-error points of `out`.
+    std::function<void(const double* values, const ScrewRunInputs&,
+                       const std::vector<PredictionPoint>&, ScrewRunOutputs&)>
+        readings;
+};
+
+/// c_nut, c_b, h; with `material` also ρc and k.
+ScrewModelVariant baseScrewModel(bool material = false);
+
+struct HeatTransferOptions {
+    int cells = 100;  ///< identification grid (converged to < 0.1 µm, see the tests)
+    double dt_s = 2;
+    double temperature_sigma_K = 0.05;  ///< weights: the noise of each kind of reading
+    double error_sigma_um = 0.5;
+    double huber_sigmas = 3;  ///< residuals beyond this many σ count linearly (robust)
+    int max_iterations = 50;
+    bool fit_temperatures = true;  ///< false: positioning errors only
+};
+
+class HeatTransferModel : public ThermalErrorModel {
+public:
+    explicit HeatTransferModel(HeatTransferOptions options = {},
+                               ScrewModelVariant variant = baseScrewModel());
+
+    QString name() const override { return QStringLiteral("heat-transfer"); }
+    QString describe() const override;
+
+    /// The fitted values, in the variant's order.
+    const std::vector<double>& values() const { return values_; }
+    const ScrewModelVariant& variant() const { return variant_; }
+    /// Simulated readings of a run with the fitted values (temperatures and errors).
+    ScrewRunOutputs simulate(const RunData& run, const std::vector<PredictionPoint>& at) const;
+
+protected:
+    FitSummary fitRuns(const std::vector<RunData>& training) override;
+    Eigen::VectorXd predictRun(const RunData& run,
+                               const std::vector<PredictionPoint>& at) const override;
+
+private:
+    ScrewRunOutputs simulateWith(const double* values, const RunData& run,
+                                 const ScrewRunInputs& inputs,
+                                 const std::vector<PredictionPoint>& at) const;
+
+    HeatTransferOptions options_;
+    ScrewModelVariant variant_;
+    std::vector<double> values_;
+};
+
+}  // namespace driftlab::models

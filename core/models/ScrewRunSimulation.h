@@ -1,0 +1,56 @@
+#pragma once
+// The screw simulation (core/physics) driven by a measured run: its motion,
+// its ambient channel, its torque; read out where the run has sensors on the
+// screw (nut flank, bearing seats) and where the interferometer measured.
+// Prepared once per run, then simulated for as many parameter sets as an
+// identification needs.
+
+#include <vector>
+
+#include "core/models/ThermalErrorData.h"
+#include "core/physics/ScrewThermalModel.h"
+
+namespace driftlab::models {
+
+/// A temperature channel on the screw that the simulation predicts.
+struct ScrewSensorSeries {
+    QString channel_id;
+    ChannelRole role = ChannelRole::Other;
+    double position_mm = 0;  ///< bearing seats: where the sensor sits
+    std::vector<double> time_s;
+    std::vector<double> measured_C;
+};
+
+struct ScrewRunInputs {
+    QString run_id;
+    double dt_s = 2;
+    double duration_s = 0;
+    double initial_C = 20;
+    std::vector<MotionSegment> motion;
+    std::vector<double> ambient_C;                ///< at k·dt, k = 0…steps
+    std::vector<double> mean_torque_squared_Nm2;  ///< per step; empty without a torque column
+    std::vector<ScrewSensorSeries> sensors;
+    std::vector<double> air_rise_K, structure_rise_K;  ///< at the error points; empty if not logged
+};
+
+/// Throws ModelError when the run lacks what the simulation needs: a screw,
+/// motion (segments or a position column), an ambient channel.
+ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& model);
+
+/// The screw of the campaign with its geometry and material; heat
+/// coefficients from `coefficients` (c_nut, c_b, h, …), numerics from `cells`.
+physics::ScrewThermalParameters screwParameters(const RunData& run,
+                                                const physics::ScrewThermalParameters& coefficients,
+                                                int cells);
+
+struct ScrewRunOutputs {
+    std::vector<std::vector<double>> sensor_C;  ///< per ScrewRunInputs::sensors entry
+    std::vector<double> error_um;               ///< per requested point
+};
+
+/// Simulates the run; thermal error at `points` relative to the run's start.
+ScrewRunOutputs simulateScrewRun(const ScrewRunInputs& inputs,
+                                 const physics::ScrewThermalParameters& parameters,
+                                 const std::vector<PredictionPoint>& points);
+
+}  // namespace driftlab::models
