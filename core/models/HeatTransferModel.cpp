@@ -27,13 +27,15 @@ struct JointResiduals {
 };
 
 /// What the data cannot separate: the parameters of the weakest direction of
-/// the scaled Jacobian.
-QString unidentifiable(const Eigen::MatrixXd& jacobian, const std::vector<FreeParameter>& names,
-                       const std::vector<double>& values) {
+/// the column-scaled Jacobian when it is numerically singular, else empty.
+QString weakestDirection(const Eigen::MatrixXd& jacobian, const std::vector<FreeParameter>& names,
+                         const std::vector<double>& values) {
     Eigen::MatrixXd scaled = jacobian;
     for (Eigen::Index c = 0; c < scaled.cols(); ++c)
-        scaled.col(c) *= std::max(std::abs(values[std::size_t(c)]), 1e-12);
+        scaled.col(c) *= std::max(std::abs(values[std::size_t(c)]), 1e-3);
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeThinV);
+    const Eigen::VectorXd& singular = svd.singularValues();
+    if (singular[0] > 0 && singular[singular.size() - 1] > 1e-8 * singular[0]) return {};
     const Eigen::VectorXd weakest = svd.matrixV().col(svd.matrixV().cols() - 1);
     QStringList involved;
     for (Eigen::Index c = 0; c < weakest.size(); ++c)
@@ -191,27 +193,31 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     // nominal noise levels, the fit tells the real ones).
     const double dof = std::max(1, residualCount - n);
     const double variance = 2 * solved.final_cost / dof;
-    ceres::Covariance::Options covarianceOptions;
-    covarianceOptions.algorithm_type = ceres::DENSE_SVD;
-    ceres::Covariance covariance(covarianceOptions);
+    // Identifiability first, from the SVD of the column-scaled Jacobian (Ceres'
+    // covariance would only log that the matrix is rank deficient).
+    ceres::CRSMatrix crs;
+    problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &crs);
+    Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+    for (int row = 0; row < crs.num_rows; ++row)
+        for (int k = crs.rows[std::size_t(row)]; k < crs.rows[std::size_t(row) + 1]; ++k)
+            jacobian(row, crs.cols[std::size_t(k)]) = crs.values[std::size_t(k)];
+    const QString weak = weakestDirection(jacobian, free, values);
     std::vector<double> block(std::size_t(n * n), std::nan(""));
-    const std::vector<std::pair<const double*, const double*>> blocks{
-        {values.data(), values.data()}};
-    const bool identifiable =
-        covariance.Compute(blocks, &problem) &&
-        covariance.GetCovarianceBlock(values.data(), values.data(), block.data());
-    if (!identifiable) {
-        ceres::CRSMatrix crs;
-        problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &crs);
-        Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
-        for (int row = 0; row < crs.num_rows; ++row)
-            for (int k = crs.rows[std::size_t(row)]; k < crs.rows[std::size_t(row) + 1]; ++k)
-                jacobian(row, crs.cols[std::size_t(k)]) = crs.values[std::size_t(k)];
+    bool identifiable = weak.isEmpty();
+    if (identifiable) {
+        ceres::Covariance::Options covarianceOptions;
+        covarianceOptions.algorithm_type = ceres::DENSE_SVD;
+        ceres::Covariance covariance(covarianceOptions);
+        const std::vector<std::pair<const double*, const double*>> blocks{
+            {values.data(), values.data()}};
+        identifiable = covariance.Compute(blocks, &problem) &&
+                       covariance.GetCovarianceBlock(values.data(), values.data(), block.data());
+    }
+    if (!identifiable)
         summary.notes << QStringLiteral(
                              "not identifiable: these runs cannot separate %1; their "
                              "values are one of many that fit equally well")
-                             .arg(unidentifiable(jacobian, free, values));
-    }
+                             .arg(weak.isEmpty() ? QStringLiteral("the parameters") : weak);
     for (int i = 0; i < n; ++i) {
         const auto& p = free[std::size_t(i)];
         const double sigma =

@@ -1,0 +1,124 @@
+// driftlab-cli fit and compare on a simulated campaign: the JSON that scripts
+// rely on (DESIGN.md section 9), fits kept in the database, clear refusals.
+#include <gtest/gtest.h>
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+#include "db/ModelFitStore.h"
+#include "tests/cli/CliRunner.h"
+
+using namespace driftlab;
+using namespace driftlab::test;
+
+namespace {
+
+/// S1, S4 and S5 of the rig, with a spindle run: written once per test binary.
+const QString& simulatedBundle() {
+    static QTemporaryDir dir;
+    static const QString bundle = [] {
+        const QString path = dir.filePath(QStringLiteral("campaign"));
+        CliResult r = runCli({QStringLiteral("simulate"), QStringLiteral("--out"), path,
+                              QStringLiteral("--runs"), QStringLiteral("S1,S4,S5"),
+                              QStringLiteral("--spindle")});
+        EXPECT_EQ(r.exitCode, 0) << r.err.constData();
+        return path;
+    }();
+    return bundle;
+}
+
+QJsonObject json(const CliResult& r) {
+    return QJsonDocument::fromJson(r.out).object();
+}
+
+}  // namespace
+
+TEST(ModelCli, fitJsonHasParametersWithSigmaAndTheHeldOutScore) {
+    CliResult r = runCli({QStringLiteral("fit"), simulatedBundle(), QStringLiteral("--model"),
+                          QStringLiteral("heat-transfer"), QStringLiteral("--train"),
+                          QStringLiteral("S1"), QStringLiteral("--json")});
+    ASSERT_EQ(r.exitCode, 0) << r.err.constData();
+    const QJsonObject fit = json(r);
+    EXPECT_EQ(fit[QStringLiteral("model")].toString(), QStringLiteral("heat-transfer"));
+    EXPECT_EQ(fit[QStringLiteral("train_runs")].toArray(), QJsonArray({"S1"}));
+    EXPECT_EQ(fit[QStringLiteral("test_runs")].toArray(), QJsonArray({"S4", "S5"}));
+    const QJsonObject cNut = fit[QStringLiteral("parameters")][QStringLiteral("c_nut")].toObject();
+    EXPECT_NEAR(cNut[QStringLiteral("value")].toDouble(), 0.11, 0.011);
+    EXPECT_GT(cNut[QStringLiteral("sigma")].toDouble(), 0);
+    const QJsonObject test = fit[QStringLiteral("test")].toObject();
+    EXPECT_GT(test[QStringLiteral("reduction")].toDouble(), 0.9);
+    EXPECT_LT(test[QStringLiteral("rms_um")].toDouble(),
+              test[QStringLiteral("peak_um")].toDouble());
+}
+
+TEST(ModelCli, fitFromTheDatabaseIsStoredWithItsRunsAndFigures) {
+    QTemporaryDir dir;
+    const QString dbPath = dir.filePath(QStringLiteral("campaign.sqlite"));
+    CliResult imported =
+        runCli({QStringLiteral("import"), simulatedBundle(), QStringLiteral("--db"), dbPath});
+    ASSERT_EQ(imported.exitCode, 0) << imported.err.constData();
+    const QString id = QString::fromUtf8(imported.out.trimmed());
+    CliResult r =
+        runCli({QStringLiteral("fit"), QStringLiteral("--db"), dbPath, QStringLiteral("--campaign"),
+                id, QStringLiteral("--model"), QStringLiteral("mlr"), QStringLiteral("--train"),
+                QStringLiteral("S1,S4"), QStringLiteral("--test"), QStringLiteral("S5")});
+    ASSERT_EQ(r.exitCode, 0) << r.err.constData();
+
+    QString error;
+    auto store = db::CampaignStore::open(dbPath, &error);
+    ASSERT_TRUE(store) << qPrintable(error);
+    const auto fits = db::modelFits(*store, id.toLongLong());
+    ASSERT_EQ(fits.size(), 1u);
+    EXPECT_EQ(fits[0].model, QStringLiteral("mlr"));
+    EXPECT_EQ(fits[0].train_runs, QStringList({"S1", "S4"}));
+    EXPECT_EQ(fits[0].test_runs, QStringList({"S5"}));
+    EXPECT_FALSE(fits[0].parameters.isEmpty());
+    EXPECT_GT(fits[0].metrics[QStringLiteral("test")][QStringLiteral("rms_um")].toDouble(), 0);
+}
+
+TEST(ModelCli, compareGivesTheCrossStateMatrixOfEveryModel) {
+    CliResult r = runCli({QStringLiteral("compare"), simulatedBundle(), QStringLiteral("--json")});
+    ASSERT_EQ(r.exitCode, 0) << r.err.constData();
+    const QJsonObject cmp = json(r);
+    EXPECT_EQ(cmp[QStringLiteral("runs")].toArray(), QJsonArray({"S1", "S4", "S5"}));
+    const QJsonObject models = cmp[QStringLiteral("models")].toObject();
+    EXPECT_EQ(models.keys(),
+              QStringList({"exponential", "heat-transfer", "mlr", "poly-position", "sensorless"}));
+    for (const QString& name : models.keys()) {
+        const QJsonArray m = models[name][QStringLiteral("rms_um")].toArray();
+        ASSERT_EQ(m.size(), 3) << qPrintable(name);
+        for (const auto& row : m) EXPECT_EQ(row.toArray().size(), 3) << qPrintable(name);
+    }
+    // Fitted on S1, scored on S4: the regression misses, physics does not.
+    const double mlr = models[QStringLiteral("mlr")][QStringLiteral("rms_um")][0][1].toDouble();
+    const double physics =
+        models[QStringLiteral("heat-transfer")][QStringLiteral("rms_um")][0][1].toDouble();
+    EXPECT_GT(mlr, 3 * physics);
+}
+
+TEST(ModelCli, driftChannelOfTheSpindleRunIsATarget) {
+    CliResult r = runCli({QStringLiteral("fit"), simulatedBundle(), QStringLiteral("--model"),
+                          QStringLiteral("mlr"), QStringLiteral("--target"), QStringLiteral("D_z"),
+                          QStringLiteral("--json")});
+    ASSERT_EQ(r.exitCode, 0) << r.err.constData();
+    EXPECT_EQ(json(r)[QStringLiteral("train_runs")].toArray(), QJsonArray({"SP1"}));
+}
+
+TEST(ModelCli, badRequestsAreRefusedWithTheReason) {
+    CliResult unknown = runCli({QStringLiteral("fit"), simulatedBundle(), QStringLiteral("--model"),
+                                QStringLiteral("crystal-ball")});
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_TRUE(reason(unknown.err).contains("'crystal-ball' is not a model"));
+    CliResult spindle =
+        runCli({QStringLiteral("fit"), simulatedBundle(), QStringLiteral("--model"),
+                QStringLiteral("heat-transfer"), QStringLiteral("--train"), QStringLiteral("SP1")});
+    EXPECT_EQ(spindle.exitCode, 1);
+    EXPECT_TRUE(reason(spindle.err).contains("SP1")) << spindle.err.constData();
+    CliResult missing =
+        runCli({QStringLiteral("fit"), simulatedBundle(), QStringLiteral("--model"),
+                QStringLiteral("mlr"), QStringLiteral("--train"), QStringLiteral("S9")});
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_TRUE(reason(missing.err).contains("S9")) << missing.err.constData();
+}
