@@ -17,6 +17,7 @@ int infoCommand(const QStringList& args);
 int simulateCommand(const QStringList& args);
 int fitCommand(const QStringList& args);
 int compareCommand(const QStringList& args);
+int benchCommand(const QStringList& args);
 }  // namespace driftlab::cli
 
 int main(int argc, char** argv) {
@@ -47,6 +48,8 @@ int main(int argc, char** argv) {
              {fitCommand, "fit BUNDLE --model NAME [--train R,..] [--test R,..] [--target CH]"}},
             {QStringLiteral("compare"),
              {compareCommand, "compare BUNDLE              every model, cross-state matrix"}},
+            {QStringLiteral("bench"),
+             {benchCommand, "bench [--json]              the performance figures of this machine"}},
         };
     QStringList args = app.arguments();
     if (args.size() < 2 || !commands.count(args[1])) {

@@ -8,12 +8,14 @@ namespace driftlab::physics {
 
 namespace {
 
-double halfSquaredRamp(double u) {
-    return u > 0 ? 0.5 * u * u : 0.0;
+/// ½·max(u, 0)², branch-free: the sign changes from cell to cell along a stroke.
+inline double halfSquaredRamp(double u) {
+    u = std::max(u, 0.0);
+    return 0.5 * u * u;
 }
 
 /// Antiderivative in x of |[x−w/2, x+w/2] ∩ [lo, hi]|.
-double overlapAntiderivative(double x, double halfNut, double lo, double hi) {
+inline double overlapAntiderivative(double x, double halfNut, double lo, double hi) {
     return halfSquaredRamp(x + halfNut - lo) - halfSquaredRamp(x + halfNut - hi) -
            halfSquaredRamp(x - halfNut - lo) + halfSquaredRamp(x - halfNut - hi);
 }

@@ -100,6 +100,7 @@ private:
     std::vector<double> initial_;    ///< for the energy ledger
     std::vector<double> source_J_;   ///< heat deposited in the current step, per cell
     std::vector<double> rhs_;
+    double temperatureSum_ = 0;  ///< Σ T of the current field, for the ledger
 
     TridiagonalSolver solver_;
     double factorisedDt_ = -1;

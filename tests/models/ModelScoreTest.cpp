@@ -120,14 +120,15 @@ TEST(CrossStateMatrix, reportsAFailedFitAndCanBeCancelled) {
 TEST(ModelFactory, makesEveryNamedModel) {
     EXPECT_EQ(modelNames(),
               QStringList({QStringLiteral("mlr"), QStringLiteral("poly-position"),
-                           QStringLiteral("exponential"), QStringLiteral("sensorless")}));
+                           QStringLiteral("exponential"), QStringLiteral("heat-transfer"),
+                           QStringLiteral("sensorless")}));
     for (const QString& name : modelNames()) {
         const auto model = makeModel(name);
         ASSERT_TRUE(model) << qPrintable(name);
         EXPECT_EQ(model->name(), name);
         EXPECT_FALSE(model->describe().isEmpty());
     }
-    EXPECT_EQ(makeModel(QStringLiteral("heat-transfer")), nullptr);
+    EXPECT_EQ(makeModel(QStringLiteral("crystal-ball")), nullptr);
 }
 
 TEST(ThermalErrorModel, predictionOfAnotherTargetIsAnError) {

@@ -1,0 +1,144 @@
+// bench: the performance figures of DESIGN.md section 10, measured here and
+// now on this machine (medians of several repetitions).
+#include <QElapsedTimer>
+#include <QFile>
+#include <QJsonDocument>
+#include <QProcess>
+#include <QStandardPaths>
+#include <algorithm>
+#include <vector>
+
+#include "app/cli/CliCommon.h"
+#include "core/models/HeatTransferModel.h"
+#include "core/physics/ScrewThermalModel.h"
+#include "core/physics/SimulationThroughput.h"
+#include "core/rig/CampaignSimulator.h"
+
+namespace driftlab::cli {
+namespace {
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+/// Heat-transfer identification on the five-run rig campaign: seconds, iterations, cost.
+QJsonObject identificationFigures(int repetitions) {
+    const Campaign campaign = rig::simulateCampaign(rig::RigSpec{});
+    QStringList ids;
+    for (const auto& r : campaign.runs) ids << r.id;
+    const models::DatasetResult data = models::buildDataset(campaign, ids);
+    if (!data.ok()) throw CliError(data.error);
+    std::vector<double> seconds;
+    models::FitSummary fit;
+    for (int i = 0; i < repetitions; ++i) {
+        models::HeatTransferModel model;
+        QElapsedTimer timer;
+        timer.start();
+        fit = model.fit(data.runs);
+        seconds.push_back(timer.nsecsElapsed() * 1e-9);
+        if (!fit.success) throw CliError(fit.message);
+        printProgress(QStringLiteral("identification"), (i + 1.0) / repetitions);
+    }
+    return {{QStringLiteral("identification_s"), median(seconds)},
+            {QStringLiteral("identification_iterations"), fit.iterations},
+            {QStringLiteral("identification_final_cost"),
+             fit.metrics.at(QStringLiteral("final_cost"))}};
+}
+
+/// One observer step of the live model plus a 128-point compensation table, µs.
+double onlineStepMicroseconds() {
+    physics::BenchmarkCampaign campaign;
+    physics::ScrewThermalModel screw(campaign.parameters, 20);
+    std::vector<double> table(128);
+    for (std::size_t i = 0; i < table.size(); ++i) table[i] = 700.0 * double(i) / 127;
+    physics::StepConditions step;
+    step.motion = campaign.motion;
+    const int steps = 20000;
+    double sink = 0;
+    QElapsedTimer timer;
+    timer.start();
+    for (int k = 0; k < steps; ++k) {
+        screw.step(step);
+        sink += screw.thermalError_um(table).back();
+    }
+    const double us = timer.nsecsElapsed() * 1e-3 / steps;
+    return sink == sink ? us : us;  // keep the work observable
+}
+
+/// The same campaign in NumPy/SciPy (solve_banded), when Python has SciPy.
+QJsonObject scipyFigures() {
+    QFile script(QStringLiteral(":/bench/scipy_screw_bench.py"));
+    if (!script.open(QIODevice::ReadOnly)) return {};
+    const QByteArray code = script.readAll();
+    for (const QString& python :
+         {QStringLiteral("/usr/bin/python3"), QStandardPaths::findExecutable("python3")}) {
+        if (python.isEmpty() || !QFile::exists(python)) continue;
+        QProcess p;
+        p.start(python, {QStringLiteral("-"), QStringLiteral("--repeat"), QStringLiteral("3")});
+        p.write(code);
+        p.closeWriteChannel();
+        if (!p.waitForFinished(600'000) || p.exitCode() != 0) continue;
+        return QJsonDocument::fromJson(p.readAllStandardOutput()).object();
+    }
+    return {};
+}
+
+}  // namespace
+
+int benchCommand(const QStringList& args) {
+    QCommandLineParser parser;
+    const QCommandLineOption repeat{QStringLiteral("repeat"),
+                                    QStringLiteral("Repetitions per figure (median)."),
+                                    QStringLiteral("N"), QStringLiteral("5")};
+    const QCommandLineOption noPython{QStringLiteral("no-python"),
+                                      QStringLiteral("Skip the SciPy comparison.")};
+    parseArguments(parser, args, {repeat, noPython});
+    const int repetitions = std::max(1, parser.value(repeat).toInt());
+
+    printProgress(QStringLiteral("simulation"), 0);
+    const physics::SimulationThroughput sim = physics::measureSimulationThroughput(repetitions);
+    printProgress(QStringLiteral("simulation"), 1);
+    QJsonObject figures{{QStringLiteral("simulation_cell_steps_per_s"), sim.cell_steps_per_s},
+                        {QStringLiteral("simulation_8h_campaign_ms"), sim.campaign_ms},
+                        {QStringLiteral("online_step_us"), onlineStepMicroseconds()}};
+    const QJsonObject identification = identificationFigures(std::min(repetitions, 3));
+    for (auto it = identification.begin(); it != identification.end(); ++it)
+        figures[it.key()] = it.value();
+    if (!parser.isSet(noPython)) {
+        printProgress(QStringLiteral("scipy comparison"), 0);
+        const QJsonObject scipy = scipyFigures();
+        printProgress(QStringLiteral("scipy comparison"), 1);
+        const double theirs = scipy[QStringLiteral("cell_steps_per_s")].toDouble();
+        if (theirs > 0) {
+            figures[QStringLiteral("scipy_cell_steps_per_s")] = theirs;
+            figures[QStringLiteral("simulation_speedup_vs_scipy")] = sim.cell_steps_per_s / theirs;
+        }
+    }
+
+    if (parser.isSet(QStringLiteral("json"))) {
+        printJson(figures);
+        return 0;
+    }
+    printLine(QStringLiteral("simulation      %1 million cell-steps/s; 8 h campaign, 200 cells, "
+                             "1 s steps: %2 ms (target ≥ 200 million, < 30 ms)")
+                  .arg(sim.cell_steps_per_s / 1e6, 0, 'f', 0)
+                  .arg(sim.campaign_ms, 0, 'f', 1));
+    if (figures.contains(QStringLiteral("scipy_cell_steps_per_s")))
+        printLine(
+            QStringLiteral("                SciPy solve_banded: %1 million cell-steps/s "
+                           "(%2× slower)")
+                .arg(figures[QStringLiteral("scipy_cell_steps_per_s")].toDouble() / 1e6, 0, 'f', 1)
+                .arg(figures[QStringLiteral("simulation_speedup_vs_scipy")].toDouble(), 0, 'f', 0));
+    printLine(QStringLiteral("online model    %1 µs per observer step + 128-point table (target "
+                             "< 50 µs)")
+                  .arg(figures[QStringLiteral("online_step_us")].toDouble(), 0, 'f', 2));
+    printLine(QStringLiteral("identification  heat-transfer on 5 runs: %1 s, %2 iterations, "
+                             "final cost %3 (target < 2 s)")
+                  .arg(figures[QStringLiteral("identification_s")].toDouble(), 0, 'f', 2)
+                  .arg(figures[QStringLiteral("identification_iterations")].toInt())
+                  .arg(figures[QStringLiteral("identification_final_cost")].toDouble(), 0, 'g', 4));
+    return 0;
+}
+
+}  // namespace driftlab::cli
