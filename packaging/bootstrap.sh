@@ -2,7 +2,7 @@
 # DriftLab set-up on Debian 12: installs the packages it needs (skipping those
 # present), builds, then runs one job.
 #
-#   bash packaging/bootstrap.sh main    the main job: a simulated campaign, stored, modelled, compared
+#   bash packaging/bootstrap.sh main    the main job: simulated campaigns, stored, modelled, compared, diagnosed
 #   bash packaging/bootstrap.sh test    every test (ctest, offscreen)
 #   bash packaging/bootstrap.sh build   install and build only
 #
@@ -44,18 +44,23 @@ build_project() {
 run_main_job() {
     local cli=$build/app/driftlab-cli out=$build/main-job
     rm -rf "$out" && mkdir -p "$out"
-    log "main job 1/5: simulating a five-state campaign on the built-in rig"
+    log "main job 1/6: simulating a five-state campaign on the built-in rig"
     "$cli" simulate --out "$out/campaign" --plots "$out/plots" --spindle --seed 1 >/dev/null
-    log "main job 2/5: importing it into $out/driftlab.sqlite (one transaction)"
+    log "main job 2/6: importing it into $out/driftlab.sqlite (one transaction)"
     local id
     id=$("$cli" import "$out/campaign" --db "$out/driftlab.sqlite")
     "$cli" info --db "$out/driftlab.sqlite" --campaign "$id"
-    log "main job 3/5: heat-transfer model identified on S1, tested on S2-S5 (stored in the database)"
+    log "main job 3/6: heat-transfer model identified on S1, tested on S2-S5 (stored in the database)"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model heat-transfer --train S1
-    log "main job 4/5: the same with the best temperature regression (mlr)"
+    log "main job 4/6: the same with the best temperature regression (mlr)"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model mlr --train S1
-    log "main job 5/5: every model, fitted on each state and scored on every other"
+    log "main job 5/6: every model, fitted on each state and scored on every other"
     "$cli" compare --db "$out/driftlab.sqlite" --campaign "$id"
+    log "main job 6/6: a second campaign with an effect hidden in it (forced convection); the diagnosis must find it"
+    "$cli" simulate --out "$out/hidden" --seed 2 --effect forced_convection=0.05 >/dev/null
+    local hidden
+    hidden=$("$cli" import "$out/hidden" --db "$out/driftlab.sqlite")
+    "$cli" diagnose --db "$out/driftlab.sqlite" --campaign "$hidden" --plots "$out/plots/diagnosis"
     log "done: bundle $out/campaign, database $out/driftlab.sqlite, plots in $out/plots"
 }
 

@@ -2,6 +2,7 @@
 
 #include <QDir>
 #include <QJsonDocument>
+#include <cmath>
 #include <cstdio>
 
 #include "core/bundle/BundleReader.h"
@@ -36,9 +37,8 @@ Campaign loadCampaignSource(const QCommandLineParser& parser) {
         bool ok = false;
         const qint64 id = parser.value(QStringLiteral("campaign")).toLongLong(&ok);
         if (!ok) throw CliError(QStringLiteral("--db needs --campaign ID (a number)"), 2);
+        auto store = openSourceStore(parser);
         QString error;
-        auto store = db::CampaignStore::open(parser.value(QStringLiteral("db")), &error);
-        if (!store) throw CliError(error);
         auto campaign = store->loadCampaign(id, &error);
         if (!campaign) throw CliError(error);
         return *campaign;
@@ -46,6 +46,24 @@ Campaign loadCampaignSource(const QCommandLineParser& parser) {
     if (positional.size() != 1)
         throw CliError(QStringLiteral("give a BUNDLE folder or --db FILE --campaign ID"), 2);
     return readBundleOrFail(positional.front());
+}
+
+std::unique_ptr<db::CampaignStore> openSourceStore(const QCommandLineParser& parser) {
+    QString error;
+    auto store = db::CampaignStore::open(parser.value(QStringLiteral("db")), &error);
+    if (!store) throw CliError(error);
+    return store;
+}
+
+std::optional<qint64> storeFitIfFromDatabase(const QCommandLineParser& parser,
+                                             const db::ModelFitRecord& record) {
+    if (!parser.isSet(QStringLiteral("db"))) return std::nullopt;
+    auto store = openSourceStore(parser);
+    QString error;
+    auto id = db::storeModelFit(*store, parser.value(QStringLiteral("campaign")).toLongLong(),
+                                record, &error);
+    if (!id) throw CliError(error);
+    return id;
 }
 
 Campaign readBundleOrFail(const QString& path) {
@@ -81,6 +99,16 @@ bool printProgress(const QString& label, double fraction) {
 void endProgressLine() {
     if (g_progressLineOpen) std::fputc('\n', stderr);
     g_progressLineOpen = false;
+}
+
+QJsonValue jsonNumber(double value) {
+    return std::isfinite(value) ? QJsonValue(value) : QJsonValue();
+}
+
+QStringList runList(const QString& text) {
+    QStringList ids;
+    for (const QString& id : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) ids << id.trimmed();
+    return ids;
 }
 
 void printJson(const QJsonObject& object) {

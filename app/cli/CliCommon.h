@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/domain/Campaign.h"
+#include "db/ModelFitStore.h"
 
 namespace driftlab::cli {
 
@@ -28,6 +29,12 @@ void parseArguments(QCommandLineParser& parser, const QStringList& args,
 QList<QCommandLineOption> campaignSourceOptions();
 /// The campaign named by the positional BUNDLE or by --db/--campaign.
 Campaign loadCampaignSource(const QCommandLineParser& parser);
+/// With --db: the database of the campaign, opened (throws CliError).
+std::unique_ptr<db::CampaignStore> openSourceStore(const QCommandLineParser& parser);
+/// Stores a fit when the campaign came from --db; returns its id.
+std::optional<qint64> storeFitIfFromDatabase(const QCommandLineParser& parser,
+                                             const db::ModelFitRecord& record);
+
 /// Reads and validates a bundle folder; throws CliError with file:line:column: why.
 Campaign readBundleOrFail(const QString& path);
 
@@ -35,6 +42,11 @@ Campaign readBundleOrFail(const QString& path);
 bool printProgress(const QString& label, double fraction);
 /// Ends an unfinished progress line so that what follows starts on its own line.
 void endProgressLine();
+
+/// NaN (not determined) is JSON null.
+QJsonValue jsonNumber(double value);
+/// "S1, S2,S3" → {S1, S2, S3}.
+QStringList runList(const QString& text);
 
 void printJson(const QJsonObject& object);
 void printLine(const QString& text);

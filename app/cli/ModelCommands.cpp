@@ -5,21 +5,9 @@
 #include "app/cli/CliCommon.h"
 #include "core/models/ModelFactory.h"
 #include "core/models/ModelScore.h"
-#include "db/ModelFitStore.h"
 
 namespace driftlab::cli {
 namespace {
-
-/// NaN (not determined) is JSON null.
-QJsonValue number(double value) {
-    return std::isfinite(value) ? QJsonValue(value) : QJsonValue();
-}
-
-QStringList runList(const QString& text) {
-    QStringList ids;
-    for (const QString& id : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) ids << id.trimmed();
-    return ids;
-}
 
 /// Runs whose thermal error a model can be fitted to: feed-axis runs, or with
 /// a drift target the runs that log that channel.
@@ -47,16 +35,6 @@ const QCommandLineOption kTargetOption{
     QStringLiteral(
         "A drift channel to model (spindle/ETVE runs) instead of the positioning error."),
     QStringLiteral("CH")};
-
-void storeFit(const QCommandLineParser& parser, const db::ModelFitRecord& record) {
-    if (!parser.isSet(QStringLiteral("db"))) return;
-    QString error;
-    auto store = db::CampaignStore::open(parser.value(QStringLiteral("db")), &error);
-    if (!store) throw CliError(error);
-    if (!db::storeModelFit(*store, parser.value(QStringLiteral("campaign")).toLongLong(), record,
-                           &error))
-        throw CliError(error);
-}
 
 }  // namespace
 
@@ -95,25 +73,27 @@ int fitCommand(const QStringList& args) {
 
     QJsonObject parameters;
     for (const auto& [name, p] : fit.parameters)
-        parameters[name] = QJsonObject{{QStringLiteral("value"), number(p.value)},
-                                       {QStringLiteral("sigma"), number(p.sigma)},
+        parameters[name] = QJsonObject{{QStringLiteral("value"), jsonNumber(p.value)},
+                                       {QStringLiteral("sigma"), jsonNumber(p.sigma)},
                                        {QStringLiteral("unit"), p.unit}};
     QJsonObject metrics;
-    for (const auto& [name, value] : fit.metrics) metrics[name] = number(value);
-    metrics[QStringLiteral("train_rms_um")] = number(fit.rms_um);
+    for (const auto& [name, value] : fit.metrics) metrics[name] = jsonNumber(value);
+    metrics[QStringLiteral("train_rms_um")] = jsonNumber(fit.rms_um);
     metrics[QStringLiteral("iterations")] = fit.iterations;
     QJsonObject testScore;
     if (!testRuns.isEmpty()) {
         const models::Score score = models::scoreModel(*m, dataset(campaign, testRuns, target));
         if (!score.ok()) throw CliError(score.error);
-        testScore = {{QStringLiteral("rms_um"), number(score.rms_um)},
-                     {QStringLiteral("peak_um"), number(score.peak_um)},
-                     {QStringLiteral("reduction"), number(score.reduction)},
-                     {QStringLiteral("uncompensated_rms_um"), number(score.uncompensated_rms_um)}};
+        testScore = {
+            {QStringLiteral("rms_um"), jsonNumber(score.rms_um)},
+            {QStringLiteral("peak_um"), jsonNumber(score.peak_um)},
+            {QStringLiteral("reduction"), jsonNumber(score.reduction)},
+            {QStringLiteral("uncompensated_rms_um"), jsonNumber(score.uncompensated_rms_um)}};
         metrics[QStringLiteral("test")] = testScore;
     }
-    storeFit(parser, {0, m->name(), target.isEmpty() ? QStringLiteral("positioning") : target,
-                      trainRuns, testRuns, parameters, metrics});
+    storeFitIfFromDatabase(
+        parser, {0, m->name(), target.isEmpty() ? QStringLiteral("positioning") : target, trainRuns,
+                 testRuns, parameters, metrics});
 
     if (parser.isSet(QStringLiteral("json"))) {
         printJson({{QStringLiteral("model"), m->name()},
@@ -123,7 +103,7 @@ int fitCommand(const QStringList& args) {
                    {QStringLiteral("test"), testScore},
                    {QStringLiteral("fit"),
                     QJsonObject{{QStringLiteral("message"), fit.message},
-                                {QStringLiteral("rms_um"), number(fit.rms_um)},
+                                {QStringLiteral("rms_um"), jsonNumber(fit.rms_um)},
                                 {QStringLiteral("notes"), QJsonArray::fromStringList(fit.notes)},
                                 {QStringLiteral("metrics"), metrics}}}});
         return 0;
@@ -173,7 +153,7 @@ int compareCommand(const QStringList& args) {
         QJsonArray rows;
         for (const auto& row : matrix.rms_um) {
             QJsonArray r;
-            for (double v : row) r << number(v);
+            for (double v : row) r << jsonNumber(v);
             rows << r;
         }
         modelsJson[names[k]] =

@@ -18,6 +18,7 @@ int simulateCommand(const QStringList& args);
 int fitCommand(const QStringList& args);
 int compareCommand(const QStringList& args);
 int benchCommand(const QStringList& args);
+int diagnoseCommand(const QStringList& args);
 }  // namespace driftlab::cli
 
 int main(int argc, char** argv) {
@@ -48,6 +49,9 @@ int main(int argc, char** argv) {
              {fitCommand, "fit BUNDLE --model NAME [--train R,..] [--test R,..] [--target CH]"}},
             {QStringLiteral("compare"),
              {compareCommand, "compare BUNDLE              every model, cross-state matrix"}},
+            {QStringLiteral("diagnose"),
+             {diagnoseCommand,
+              "diagnose BUNDLE [--train R,.. --test R,..]   what the model misses, why"}},
             {QStringLiteral("bench"),
              {benchCommand, "bench [--json]              the performance figures of this machine"}},
         };

@@ -108,6 +108,50 @@ Eigen::VectorXd HeatTransferModel::predictRun(const RunData& run,
                                              Eigen::Index(out.error_um.size()));
 }
 
+std::size_t HeatTransferModel::writeResiduals(const double* values, const RunData& run,
+                                              const ScrewRunInputs& inputs, double huberSigmas,
+                                              double* out) const {
+    const auto points = run.observationPoints();
+    const ScrewRunOutputs sim = simulateWith(values, run, inputs, points);
+    std::size_t i = 0;
+    for (std::size_t o = 0; o < points.size(); ++o)
+        out[i++] =
+            robust((run.observations[o].error_um - sim.error_um[o]) / options_.error_sigma_um,
+                   huberSigmas);
+    if (!options_.fit_temperatures) return i;
+    for (std::size_t s = 0; s < inputs.sensors.size(); ++s)
+        for (std::size_t j = 0; j < sim.sensor_C[s].size(); ++j)
+            out[i++] = robust((inputs.sensors[s].measured_C[j] - sim.sensor_C[s][j]) /
+                                  options_.temperature_sigma_K,
+                              huberSigmas);
+    return i;
+}
+
+ReadingResiduals HeatTransferModel::residuals(const RunData& run) const {
+    if (values_.empty()) throw ModelError(QStringLiteral("model 'heat-transfer' is not fitted"));
+    const ScrewRunInputs inputs = prepareScrewRun(run, options_.dt_s, name());
+    std::size_t count = run.observations.size();
+    if (options_.fit_temperatures)
+        for (const auto& s : inputs.sensors) count += s.time_s.size();
+    std::vector<double> r(count);
+    writeResiduals(values_.data(), run, inputs, INFINITY, r.data());
+    ReadingResiduals out;
+    out.run_id = run.run_id;
+    out.points = run.observationPoints();
+    std::size_t i = 0;
+    for (; i < out.points.size(); ++i) out.error_um.push_back(r[i] * options_.error_sigma_um);
+    if (options_.fit_temperatures)
+        for (const auto& s : inputs.sensors) {
+            ReadingResiduals::Sensor sensor{s.channel_id, s.role, s.time_s, {}};
+            for (std::size_t j = 0; j < s.time_s.size(); ++j)
+                sensor.residual_K.push_back(r[i++] * options_.temperature_sigma_K);
+            out.sensors.push_back(std::move(sensor));
+        }
+    for (double v : r) out.normalizedSquares += v * v;
+    out.count = count;
+    return out;
+}
+
 FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     for (const RunData& run : training)
         if (!run.positionDependent())
@@ -135,22 +179,8 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
 
     auto evaluate = [&](const double* p, double* r) {
         try {
-            int i = 0;
-            for (std::size_t k = 0; k < training.size(); ++k) {
-                const RunData& run = training[k];
-                const auto points = run.observationPoints();
-                const ScrewRunOutputs out = simulateWith(p, run, inputs[k], points);
-                for (std::size_t o = 0; o < points.size(); ++o)
-                    r[i++] = robust(
-                        (run.observations[o].error_um - out.error_um[o]) / options_.error_sigma_um,
-                        options_.huber_sigmas);
-                if (!options_.fit_temperatures) continue;
-                for (std::size_t s = 0; s < inputs[k].sensors.size(); ++s)
-                    for (std::size_t j = 0; j < out.sensor_C[s].size(); ++j)
-                        r[i++] = robust((inputs[k].sensors[s].measured_C[j] - out.sensor_C[s][j]) /
-                                            options_.temperature_sigma_K,
-                                        options_.huber_sigmas);
-            }
+            for (std::size_t k = 0; k < training.size(); ++k)
+                r += writeResiduals(p, training[k], inputs[k], options_.huber_sigmas, r);
             return true;
         } catch (const std::invalid_argument&) {
             return false;  // parameters the physics refuses: Ceres shortens the step

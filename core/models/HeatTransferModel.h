@@ -47,6 +47,22 @@ struct HeatTransferOptions {
     bool fit_temperatures = true;  ///< false: positioning errors only
 };
 
+/// Measured − simulated, reading by reading, for one run.
+struct ReadingResiduals {
+    QString run_id;
+    std::vector<PredictionPoint> points;  ///< the thermal-error observations
+    std::vector<double> error_um;         ///< per point
+    struct Sensor {
+        QString channel_id;
+        ChannelRole role = ChannelRole::Other;
+        std::vector<double> time_s, residual_K;
+    };
+    std::vector<Sensor> sensors;
+    /// Σ (r/σ)² over both kinds of reading with the model's nominal σ, and their count.
+    double normalizedSquares = 0;
+    std::size_t count = 0;
+};
+
 class HeatTransferModel : public ThermalErrorModel {
 public:
     explicit HeatTransferModel(HeatTransferOptions options = {},
@@ -60,6 +76,9 @@ public:
     const ScrewModelVariant& variant() const { return variant_; }
     /// Simulated readings of a run with the fitted values (temperatures and errors).
     ScrewRunOutputs simulate(const RunData& run, const std::vector<PredictionPoint>& at) const;
+    /// What the fitted model misses on a run (throws ModelError on bad data).
+    ReadingResiduals residuals(const RunData& run) const;
+    const HeatTransferOptions& options() const { return options_; }
 
 protected:
     FitSummary fitRuns(const std::vector<RunData>& training) override;
@@ -67,6 +86,10 @@ protected:
                                const std::vector<PredictionPoint>& at) const override;
 
 private:
+    /// Writes the normalised residuals of one run (Huber at `huberSigmas`,
+    /// none when infinite) to `out`; returns how many.
+    std::size_t writeResiduals(const double* values, const RunData& run,
+                               const ScrewRunInputs& inputs, double huberSigmas, double* out) const;
     ScrewRunOutputs simulateWith(const double* values, const RunData& run,
                                  const ScrewRunInputs& inputs,
                                  const std::vector<PredictionPoint>& at) const;

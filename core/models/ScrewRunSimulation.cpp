@@ -74,8 +74,17 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
         }
     }
 
-    // The screw starts at the mean of its own sensors: it soaked in the room.
-    std::vector<double> screwStart;
+    // The screw starts at the room temperature it soaked in. Not at its own
+    // sensors' first readings: a sensor offset would shift the whole run.
+    in.initial_C = ambient.reference_C;
+    in.max_gap_s = run.max_gap_s;
+    if (run.interferometer) in.dead_path_mm = run.interferometer->dead_path_mm;
+    for (const TemperatureRise& t : run.temperatures) {
+        if (!t.unusable.isEmpty()) continue;
+        if (t.role == ChannelRole::Air && in.air_rise_K.empty()) in.air_rise_K = t.rise_K;
+        if (t.role == ChannelRole::Structure && in.structure_rise_K.empty())
+            in.structure_rise_K = t.rise_K;
+    }
     for (const TemperatureRise& t : run.temperatures) {
         const bool onScrew = t.role == ChannelRole::Nut ||
                              (t.role == ChannelRole::Bearing && t.position_mm.has_value());
@@ -86,12 +95,9 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
             series.time_s.push_back(t.rise_K.time_s[i]);
             series.measured_C.push_back(t.reference_C + t.rise_K.value[i]);
         }
-        screwStart.push_back(t.reference_C);
         in.sensors.push_back(std::move(series));
     }
-    in.initial_C = screwStart.empty() ? ambient.reference_C
-                                      : std::accumulate(screwStart.begin(), screwStart.end(), 0.0) /
-                                            double(screwStart.size());
+
     return in;
 }
 

@@ -25,12 +25,16 @@ struct ScrewRunInputs {
     QString run_id;
     double dt_s = 2;
     double duration_s = 0;
-    double initial_C = 20;
+    double initial_C = 20;  ///< the screw soaked in the room: the ambient reading at the start
     std::vector<MotionSegment> motion;
     std::vector<double> ambient_C;                ///< at k·dt, k = 0…steps
     std::vector<double> mean_torque_squared_Nm2;  ///< per step; empty without a torque column
     std::vector<ScrewSensorSeries> sensors;
-    std::vector<double> air_rise_K, structure_rise_K;  ///< at the error points; empty if not logged
+    /// Rises of the air and structure channels (empty when the campaign has
+    /// none), for effects on the interferometer reading.
+    Signal air_rise_K, structure_rise_K;
+    double max_gap_s = 120;
+    double dead_path_mm = 0;  ///< interferometer dead path
 };
 
 /// Throws ModelError when the run lacks what the simulation needs: a screw,

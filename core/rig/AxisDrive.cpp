@@ -43,21 +43,9 @@ double AxisDrive::torqueSquaredIntegral(std::span<const MotionSegment> motion, d
     return integral;
 }
 
-double AxisDrive::loggedTorque_Nm(std::span<const MotionSegment> motion, double time_s) {
-    double torque = 0;
-    if (!motion.empty()) {
-        const std::size_t k = segmentAt(motion, time_s);
-        const MotionSegment& s = motion[k];
-        if (time_s >= s.start_s && time_s < s.end_s) {
-            const double omega = speed_rad_s(s);
-            torque = steadyTorque_Nm(omega);
-            if (time_s - s.start_s < spec_.acceleration_time_s) {
-                const double before = k > 0 ? speed_rad_s(motion[k - 1]) : 0.0;
-                torque += spec_.inertia_kg_m2 * (omega - before) / spec_.acceleration_time_s;
-            }
-        }
-    }
-    return torque + noise_(rng_) * spec_.torque_noise_Nm;
+double AxisDrive::loggedTorque_Nm(double torqueSquaredIntegral_N2m2s, double interval_s) {
+    const double rms = interval_s > 0 ? std::sqrt(torqueSquaredIntegral_N2m2s / interval_s) : 0.0;
+    return std::max(0.0, rms + noise_(rng_) * spec_.torque_noise_Nm);
 }
 
 }  // namespace driftlab::rig

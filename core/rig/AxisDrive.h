@@ -18,8 +18,9 @@ public:
 
     /// ∫ torque² dt over [t0, t1], N²·m²·s.
     double torqueSquaredIntegral(std::span<const MotionSegment> motion, double t0, double t1);
-    /// The logged torque at a time, with noise, N·m.
-    double loggedTorque_Nm(std::span<const MotionSegment> motion, double time_s);
+    /// The logged torque: the RMS over the sample interval, as drives report
+    /// their thermal load (a 10 s snapshot would miss the reversals), with noise, N·m.
+    double loggedTorque_Nm(double torqueSquaredIntegral_N2m2s, double interval_s);
 
 private:
     double speed_rad_s(const MotionSegment& s) const;  ///< signed

@@ -184,6 +184,7 @@ Run simulateMovingRun(const RunContext& ctx, const MovingStateRun& state, unsign
     const double fixedSeat_mm = bearingSeat_mm(ctx.screw, true);
     const double freeSeat_mm = bearingSeat_mm(ctx.screw, false);
     double lastSample_s = 0;
+    double torqueSquaredSinceSample = 0;
     auto logSample = [&](double t) {
         const AxisState axis = axisStateAt(programme.motion, t);
         // Bearing-seat sensors read the screw where they sit (DESIGN.md §4).
@@ -204,7 +205,8 @@ Run simulateMovingRun(const RunContext& ctx, const MovingStateRun& state, unsign
             set(channelColumn[c], sensors[c].read(truth[c], dt));
         set(positionColumn, roundTo(axis.position_mm, 0.001));
         set(feedColumn, axis.feed_mm_min);
-        set(torqueColumn, roundTo(drive.loggedTorque_Nm(motion, t), 0.001));
+        set(torqueColumn, roundTo(drive.loggedTorque_Nm(torqueSquaredSinceSample, dt), 0.001));
+        torqueSquaredSinceSample = 0;
         run.samples.time_s.push_back(t);
         lastSample_s = t;
         if (ctx.callbacks.sample) ctx.callbacks.sample(run.id, screw);
@@ -238,7 +240,9 @@ Run simulateMovingRun(const RunContext& ctx, const MovingStateRun& state, unsign
         step.ambient_begin_C = room.at(t);
         step.ambient_end_C = room.at(t1);
         step.motion = motion;
-        step.mean_torque_squared_Nm2 = drive.torqueSquaredIntegral(motion, t, t1) / dt;
+        const double torqueSquared = drive.torqueSquaredIntegral(motion, t, t1);
+        torqueSquaredSinceSample += torqueSquared;
+        step.mean_torque_squared_Nm2 = torqueSquared / dt;
         screw.step(step);
         const auto& cells = screw.temperatures_C();
         double meanScrew = 0;

@@ -130,7 +130,8 @@ TEST(BenchCli, jsonCarriesTheFiguresOfDesignSection10) {
     ASSERT_EQ(r.exitCode, 0) << r.err.constData();
     const QJsonObject figures = json(r);
     // Figures, not verdicts: speed is judged by reading them, never by a test.
-    for (const char* key : {"simulation_cell_steps_per_s", "identification_s", "online_step_us"})
+    for (const char* key :
+         {"simulation_cell_steps_per_s", "identification_s", "online_step_us", "diagnosis_s"})
         EXPECT_GT(figures[QLatin1String(key)].toDouble(), 0) << key;
     EXPECT_GT(figures[QStringLiteral("identification_iterations")].toInt(), 0);
     EXPECT_FALSE(figures.contains(QStringLiteral("scipy_cell_steps_per_s")));

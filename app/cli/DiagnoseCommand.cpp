@@ -1,0 +1,150 @@
+// diagnose: what the simulation gets wrong, the cause, the extension and its
+// gain (DESIGN.md section 6), as the JSON scripts rely on.
+#include <QDir>
+#include <QJsonArray>
+
+#include "app/cli/CliCommon.h"
+#include "core/diagnosis/Diagnosis.h"
+#include "db/DiagnosisStore.h"
+#include "ui/plots/DiagnosisPlots.h"
+
+namespace driftlab::cli {
+namespace {
+
+QJsonObject findingJson(const diagnosis::Finding& f) {
+    return {
+        {QStringLiteral("cause"), f.cause},
+        {QStringLiteral("confidence"), jsonNumber(f.confidence)},
+        {QStringLiteral("significant"), f.significant},
+        {QStringLiteral("parameters"),
+         QJsonObject{{f.parameter_name, jsonNumber(f.parameter.value)}}},
+        {QStringLiteral("sigma"), QJsonObject{{f.parameter_name, jsonNumber(f.parameter.sigma)}}},
+        {QStringLiteral("bic_drop"), jsonNumber(f.bic_drop)},
+        {QStringLiteral("evidence"), f.evidence},
+        {QStringLiteral("gain"),
+         QJsonObject{{QStringLiteral("test_rms_before_um"), jsonNumber(f.test_rms_before_um)},
+                     {QStringLiteral("test_rms_after_um"), jsonNumber(f.test_rms_after_um)},
+                     {QStringLiteral("test_temperature_rms_before_K"),
+                      jsonNumber(f.test_temperature_rms_before_K)},
+                     {QStringLiteral("test_temperature_rms_after_K"),
+                      jsonNumber(f.test_temperature_rms_after_K)},
+                     {QStringLiteral("reduction"), jsonNumber(f.reduction)}}}};
+}
+
+QJsonArray writePlots(const Campaign& campaign, const diagnosis::DiagnosisResult& r,
+                      const QString& directory) {
+    QDir().mkpath(directory);
+    const QDir dir(directory);
+    QJsonArray written;
+    const QStringList runs = r.test_runs;
+    const models::DatasetResult data = models::buildDataset(campaign, runs);
+    if (!data.ok()) throw CliError(data.error);
+    QString error;
+    for (std::size_t k = 0; k < r.base_residuals.size(); ++k) {
+        const QString run = r.base_residuals[k].run_id;
+        const QString map = dir.filePath(run + QStringLiteral("-residual-map.png"));
+        if (!ui::saveResidualMap(
+                r.base_residuals[k], map,
+                QStringLiteral("%1: positioning residual of the base model").arg(run), &error))
+            throw CliError(error);
+        const QString curves = dir.filePath(run + QStringLiteral("-before-after.png"));
+        const auto* adopted = r.adopted_residuals.empty() ? nullptr : &r.adopted_residuals[k];
+        if (!ui::saveBeforeAfter(data.runs[k], r.base_residuals[k], adopted,
+                                 QStringLiteral("with ") + r.verdict, curves,
+                                 QStringLiteral("%1: verdict %2").arg(run, r.verdict), &error))
+            throw CliError(error);
+        written << map << curves;
+    }
+    return written;
+}
+
+}  // namespace
+
+int diagnoseCommand(const QStringList& args) {
+    QCommandLineParser parser;
+    const QCommandLineOption train{QStringLiteral("train"), QStringLiteral("Training runs."),
+                                   QStringLiteral("R,..")};
+    const QCommandLineOption test{QStringLiteral("test"), QStringLiteral("Held-out runs."),
+                                  QStringLiteral("R,..")};
+    const QCommandLineOption plots{QStringLiteral("plots"),
+                                   QStringLiteral("Write the residual map and before/after "
+                                                  "curves of each held-out run into DIR."),
+                                   QStringLiteral("DIR")};
+    parseArguments(parser, args, campaignSourceOptions() << train << test << plots,
+                   QStringLiteral("BUNDLE"));
+    if (parser.isSet(train) != parser.isSet(test))
+        throw CliError(QStringLiteral("give both --train and --test, or neither"), 2);
+    const Campaign campaign = loadCampaignSource(parser);
+    diagnosis::DiagnosisOptions options;
+    options.train_runs = runList(parser.value(train));
+    options.test_runs = runList(parser.value(test));
+    options.progress = [](double f) { return printProgress(QStringLiteral("diagnosing"), f); };
+    const diagnosis::DiagnosisResult r = diagnosis::diagnose(campaign, options);
+    if (!r.ok()) throw CliError(r.error);
+
+    QJsonArray findings;
+    for (const auto& f : r.findings) findings << findingJson(f);
+    QJsonObject json{
+        {QStringLiteral("base_model"), QStringLiteral("screw-fdm")},
+        {QStringLiteral("train_runs"), QJsonArray::fromStringList(r.train_runs)},
+        {QStringLiteral("test_runs"), QJsonArray::fromStringList(r.test_runs)},
+        {QStringLiteral("base"),
+         QJsonObject{
+             {QStringLiteral("test_rms_um"), jsonNumber(r.base_test.error_rms_um)},
+             {QStringLiteral("test_peak_um"), jsonNumber(r.base_test.error_peak_um)},
+             {QStringLiteral("test_temperature_rms_K"), jsonNumber(r.base_test.temperature_rms_K)},
+             {QStringLiteral("reading_noise_um"), jsonNumber(r.base_test.error_noise_um)}}},
+        {QStringLiteral("findings"), findings},
+        {QStringLiteral("verdict"), r.verdict}};
+    if (!r.verdict_evidence.isEmpty())
+        json[QStringLiteral("verdict_evidence")] = r.verdict_evidence;
+    if (parser.isSet(plots))
+        json[QStringLiteral("plots")] = writePlots(campaign, r, parser.value(plots));
+
+    if (parser.isSet(QStringLiteral("db"))) {
+        // The adopted extension is kept as a model fit, the diagnosis with it.
+        std::optional<qint64> adopted;
+        if (!r.findings.empty() && r.findings.front().cause == r.verdict) {
+            const auto& f = r.findings.front();
+            QJsonObject parameters;
+            for (const auto& [name, p] : f.fit.parameters)
+                parameters[name] = QJsonObject{{QStringLiteral("value"), jsonNumber(p.value)},
+                                               {QStringLiteral("sigma"), jsonNumber(p.sigma)},
+                                               {QStringLiteral("unit"), p.unit}};
+            adopted = storeFitIfFromDatabase(
+                parser, {0, QStringLiteral("heat-transfer+") + f.cause,
+                         QStringLiteral("positioning"), r.train_runs, r.test_runs, parameters,
+                         findingJson(f)[QStringLiteral("gain")].toObject()});
+        }
+        auto store = openSourceStore(parser);
+        QString error;
+        if (!db::storeDiagnosis(*store, parser.value(QStringLiteral("campaign")).toLongLong(),
+                                {0, QStringLiteral("screw-fdm"), r.verdict, adopted, json}, &error))
+            throw CliError(error);
+    }
+
+    if (parser.isSet(QStringLiteral("json"))) {
+        printJson(json);
+        return 0;
+    }
+    printLine(QStringLiteral("trained on %1, held out %2")
+                  .arg(r.train_runs.join(QLatin1Char(',')), r.test_runs.join(QLatin1Char(','))));
+    printLine(
+        QStringLiteral("base model on held-out runs: %1 µm RMS, peak %2 µm (reading noise %3 µm)")
+            .arg(r.base_test.error_rms_um, 0, 'f', 2)
+            .arg(r.base_test.error_peak_um, 0, 'f', 2)
+            .arg(r.base_test.error_noise_um, 0, 'f', 2));
+    for (const auto& f : r.findings)
+        printLine(QStringLiteral("  %1 %2  gain %3 %  ΔBIC %4  %5 = %6")
+                      .arg(f.significant ? QStringLiteral("*") : QStringLiteral(" "))
+                      .arg(f.cause, -28)
+                      .arg(100 * f.reduction, 5, 'f', 1)
+                      .arg(f.bic_drop, 8, 'f', 0)
+                      .arg(f.parameter_name)
+                      .arg(f.parameter.value, 0, 'g', 4));
+    printLine(QStringLiteral("verdict: %1").arg(r.verdict));
+    printLine(r.verdict_evidence.isEmpty() ? r.findings.front().evidence : r.verdict_evidence);
+    return 0;
+}
+
+}  // namespace driftlab::cli

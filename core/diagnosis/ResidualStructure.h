@@ -1,0 +1,42 @@
+#pragma once
+// Is what the model leaves noise or structure? The noise of each kind of
+// reading is estimated from the data itself (never from the model), and
+// structure is described where a test engineer would look: where in position
+// and time the positioning residual sits and what it moves with.
+
+#include <QString>
+#include <vector>
+
+#include "core/models/HeatTransferModel.h"
+
+namespace driftlab::diagnosis {
+
+/// Noise of one thermal-error observation, µm: the forward and backward
+/// readings of one target in one pass are seconds apart, so their difference
+/// is noise (√2·σ) and nothing thermal. NaN without such pairs.
+double positioningNoise_um(const std::vector<models::RunData>& runs);
+
+/// Noise of a temperature channel, K: white noise gives second differences of
+/// variance 6σ², a smooth temperature none.
+double temperatureNoise_K(const std::vector<double>& values);
+
+struct ResidualSummary {
+    double error_rms_um = 0, error_peak_um = 0;
+    double temperature_rms_K = 0;  ///< over all screw sensors
+    QString worst_channel;         ///< the sensor with the largest residual RMS
+    double worst_channel_rms_K = 0;
+    double worst_channel_noise_K = 0;
+    double error_noise_um = 0;
+    /// Residual at noise level (within `tolerance` × the noise estimates).
+    bool atNoiseLevel(double tolerance = 1.5) const;
+};
+
+ResidualSummary summarise(const std::vector<models::ReadingResiduals>& residuals,
+                          const std::vector<models::RunData>& runs);
+
+/// Where the positioning residual sits (position band × time band with the
+/// largest mean) and which temperature rise it follows best, in words.
+QString describeStructure(const std::vector<models::ReadingResiduals>& residuals,
+                          const std::vector<models::RunData>& runs);
+
+}  // namespace driftlab::diagnosis
