@@ -1,5 +1,6 @@
 #include "app/cli/CliCommon.h"
 
+#include <unistd.h>
 #include <QDir>
 #include <QJsonDocument>
 #include <cmath>
@@ -87,10 +88,21 @@ QString g_progressShown;  ///< "label: percent" last written, to rewrite only on
 }  // namespace
 
 bool printProgress(const QString& label, double fraction) {
-    const QString shown = QStringLiteral("%1: %2%").arg(label).arg(int(fraction * 100 + 0.5), 3);
+    const int percent = int(fraction * 100 + 0.5);
+    // On a terminal the line is rewritten in place; in a log (CI, a script's
+    // stderr) it grows by tens of per cent so the log stays readable.
+    static const bool terminal = isatty(fileno(stderr));
+    const int shownPercent = terminal ? percent : percent / 10 * 10;
+    const QString shown = QStringLiteral("%1: %2%").arg(label).arg(shownPercent, 3);
     if (shown == g_progressShown) return true;
+    const bool sameLabel = g_progressShown.startsWith(label + QLatin1Char(':'));
     g_progressShown = shown;
-    std::fprintf(stderr, "\r%s", qPrintable(shown));
+    if (terminal)
+        std::fprintf(stderr, "\r%s", qPrintable(shown));
+    else if (sameLabel && g_progressLineOpen)
+        std::fprintf(stderr, " %d%%", shownPercent);
+    else
+        std::fprintf(stderr, "%s%s", g_progressLineOpen ? "\n" : "", qPrintable(shown));
     g_progressLineOpen = fraction < 1.0;
     if (!g_progressLineOpen) std::fputc('\n', stderr);
     return true;

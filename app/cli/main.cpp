@@ -1,7 +1,9 @@
 // driftlab-cli: the headless DriftLab. Progress on stderr, results on stdout
 // (JSON with --json), non-zero exit and a one-line reason on failure.
+#include <glog/logging.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
 #include <QApplication>
 
 #include <cstdio>
@@ -31,6 +33,9 @@ int main(int argc, char** argv) {
         qputenv("XDG_RUNTIME_DIR", runtime);
     }
     QApplication app(argc, argv);
+    // Ceres logs through glog; what matters reaches the user as our own
+    // one-line reasons and fit notes, so only fatal glog messages show.
+    FLAGS_minloglevel = google::GLOG_FATAL;
     QCoreApplication::setApplicationName(QStringLiteral("driftlab-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIFTLAB_VERSION));
     using namespace driftlab::cli;

@@ -35,7 +35,8 @@ QString weakestDirection(const Eigen::MatrixXd& jacobian, const std::vector<Free
         scaled.col(c) *= std::max(std::abs(values[std::size_t(c)]), 1e-3);
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeThinV);
     const Eigen::VectorXd& singular = svd.singularValues();
-    if (singular[0] > 0 && singular[singular.size() - 1] > 1e-8 * singular[0]) return {};
+    // 1e-7 on J is 1e-14 on JᵀJ, where Ceres' covariance gives up.
+    if (singular[0] > 0 && singular[singular.size() - 1] > 1e-7 * singular[0]) return {};
     const Eigen::VectorXd weakest = svd.matrixV().col(svd.matrixV().cols() - 1);
     QStringList involved;
     for (Eigen::Index c = 0; c < weakest.size(); ++c)
