@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "core/diagnosis/CandidateEffects.h"
 #include "core/models/ModelError.h"
@@ -145,24 +146,23 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
         result.base_test = summarise(baseTest.residuals, test.runs);
 
         const auto candidates = candidateEffects(train.runs, base.values());
-        std::vector<models::HeatTransferModel> fitted;
         for (std::size_t k = 0; k < candidates.size(); ++k) {
             if (options.progress && !options.progress(double(k) / double(candidates.size()))) {
                 result.error = QStringLiteral("diagnosis cancelled");
                 return result;
             }
             const CandidateEffect& c = candidates[k];
-            models::HeatTransferModel model(base.options(), c.variant);
+            auto model = std::make_shared<models::HeatTransferModel>(base.options(), c.variant);
             Finding f;
             f.cause = c.cause;
             f.parameter_name = c.parameter.name;
-            f.fit = model.fit(train.runs);
+            f.fit = model->fit(train.runs);
             if (!f.fit.success) continue;  // an extension the data cannot carry
-            const Evaluation candidateTrain = evaluate(model, train.runs);
-            const Evaluation candidateTest = evaluate(model, test.runs);
+            const Evaluation candidateTrain = evaluate(*model, train.runs);
+            const Evaluation candidateTest = evaluate(*model, test.runs);
             const ResidualSummary after = summarise(candidateTest.residuals, test.runs);
             f.parameter = f.fit.parameters.at(c.parameter.name);
-            f.values = model.values();
+            f.model = model;
             // BIC with the noise variance estimated: N·ln(χ²₀/χ²₁) − ln N per parameter.
             const double n = double(candidateTrain.count);
             f.bic_drop = n * std::log(baseTrain.chi2 / candidateTrain.chi2) - std::log(n);
@@ -177,22 +177,10 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
             f.evidence =
                 evidenceFor(c, f.parameter.value, result.base_test, after, result.test_runs);
             result.findings.push_back(f);
-            fitted.push_back(model);
-            if (!f.significant) fitted.back() = models::HeatTransferModel();
         }
         // Best held-out gain first; confidence from how clearly it beats the rest.
-        std::vector<std::size_t> order(result.findings.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-        std::sort(order.begin(), order.end(), [&](auto a, auto b) {
-            return result.findings[a].reduction > result.findings[b].reduction;
-        });
-        std::vector<Finding> sorted;
-        std::vector<models::HeatTransferModel> sortedModels;
-        for (auto i : order) {
-            sorted.push_back(result.findings[i]);
-            sortedModels.push_back(fitted[i]);
-        }
-        result.findings = sorted;
+        std::sort(result.findings.begin(), result.findings.end(),
+                  [](const Finding& a, const Finding& b) { return a.reduction > b.reduction; });
         for (std::size_t i = 0; i < result.findings.size(); ++i) {
             Finding& f = result.findings[i];
             const double runnerUp = i + 1 < result.findings.size()
@@ -207,7 +195,8 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
         if (named && leavesOnlyNoise(result.findings.front().test_after, result.base_test,
                                      options.max_residual_over_noise)) {
             result.verdict = result.findings.front().cause;
-            result.adopted_residuals = evaluate(sortedModels.front(), test.runs).residuals;
+            result.adopted_residuals =
+                evaluate(*result.findings.front().model, test.runs).residuals;
         } else if (result.base_test.atNoiseLevel()) {
             result.verdict = QStringLiteral("none");
             result.verdict_evidence =

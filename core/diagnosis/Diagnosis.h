@@ -7,6 +7,7 @@
 #include <QStringList>
 #include <functional>
 #include <map>
+#include <memory>
 #include <vector>
 
 #include "core/diagnosis/ResidualStructure.h"
@@ -45,7 +46,7 @@ struct Finding {
     double reduction = 0;
     ResidualSummary test_after;  ///< what the extension leaves on the held-out runs
     models::FitSummary fit;
-    std::vector<double> values;  ///< all the extended model's values
+    std::shared_ptr<const models::HeatTransferModel> model;  ///< the fitted extension
 };
 
 struct DiagnosisResult {
