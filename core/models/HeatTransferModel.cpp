@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/models/CeresResiduals.h"
 #include "core/models/ModelError.h"
 
 namespace driftlab::models {
@@ -18,13 +19,6 @@ double robust(double r, double delta) {
     const double a = std::abs(r);
     return a <= delta ? r : std::copysign(std::sqrt(2 * delta * a - delta * delta), r);
 }
-
-struct JointResiduals {
-    const std::function<bool(const double*, double*)> evaluate;
-    bool operator()(double const* const* parameters, double* residuals) const {
-        return evaluate(parameters[0], residuals);
-    }
-};
 
 /// What the data cannot separate: the parameters of the weakest direction of
 /// the column-scaled Jacobian when it is numerically singular, else empty.
@@ -189,10 +183,7 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     };
 
     ceres::Problem problem;
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<JointResiduals, ceres::FORWARD>(
-        new JointResiduals{evaluate});
-    cost->AddParameterBlock(n);
-    cost->SetNumResiduals(residualCount);
+    ceres::CostFunction* cost = numericCost<ceres::FORWARD>(evaluate, n, residualCount);
     problem.AddResidualBlock(cost, nullptr, values.data());
     for (int i = 0; i < n; ++i) {
         problem.SetParameterLowerBound(values.data(), i, free[std::size_t(i)].lower);

@@ -1,13 +1,15 @@
 #include "core/models/LaggedRegression.h"
 
+#include <ceres/ceres.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 
+#include "core/models/CeresResiduals.h"
 #include "core/models/LeastSquares.h"
 #include "core/models/ModelError.h"
-#include "core/models/NelderMead.h"
 
 namespace driftlab::models {
 namespace {
@@ -189,30 +191,42 @@ FitSummary LaggedRegression::fit(const std::vector<LagCase>& cases,
                              .arg(parameterCount));
 
     const double lo = std::log(options_.min_tau_s), hi = std::log(options_.max_tau_s);
-    auto tauOf = [&](const Eigen::VectorXd& logTau) {
+    // Variable projection: for given τ the gains are a linear least squares,
+    // so Ceres searches log τ only (bounded to the grid's range), on the
+    // residual left after the gains are solved for.
+    auto residuals = [&](const double* logTau, double* r) {
         std::vector<double> tau(K);
-        for (std::size_t k = 0; k < K; ++k)
-            tau[k] = std::exp(std::clamp(logTau[Eigen::Index(k)], lo, hi));
-        return tau;
-    };
-    auto rss = [&](const Eigen::VectorXd& logTau) {
-        return solveLeastSquares(design(responses(cases, tauOf(logTau)), dx), y).rss;
+        for (std::size_t k = 0; k < K; ++k) tau[k] = std::exp(std::clamp(logTau[k], lo, hi));
+        const Eigen::MatrixXd X = design(responses(cases, tau), dx);
+        Eigen::Map<Eigen::VectorXd>(r, y.size()) = y - X * solveLeastSquares(X, y).coefficients;
+        return true;
     };
     const std::vector<double> start = gridSearch(cases, dx, y);
-    Eigen::VectorXd logStart(static_cast<Eigen::Index>(K));
-    for (std::size_t k = 0; k < K; ++k) logStart[Eigen::Index(k)] = std::log(start[k]);
-    NelderMeadOptions search;
-    search.initial_step = (hi - lo) / (options_.grid_points - 1);
-    const NelderMeadResult refined = minimiseNelderMead(rss, logStart, search);
+    std::vector<double> logTau(K);
+    for (std::size_t k = 0; k < K; ++k) logTau[k] = std::log(start[k]);
+    ceres::Problem problem;
+    problem.AddResidualBlock(numericCost<ceres::CENTRAL>(residuals, int(K), int(y.size())), nullptr,
+                             logTau.data());
+    for (int k = 0; k < int(K); ++k) {
+        problem.SetParameterLowerBound(logTau.data(), k, lo);
+        problem.SetParameterUpperBound(logTau.data(), k, hi);
+    }
+    ceres::Solver::Options solverOptions;
+    solverOptions.linear_solver_type = ceres::DENSE_QR;
+    solverOptions.logging_type = ceres::SILENT;
+    ceres::Solver::Summary refined;
+    ceres::Solve(solverOptions, &problem, &refined);
 
-    tau_s_ = sortedPerInput(tauOf(refined.x));
+    std::vector<double> tau(K);
+    for (std::size_t k = 0; k < K; ++k) tau[k] = std::exp(logTau[k]);
+    tau_s_ = sortedPerInput(tau);
     const Eigen::MatrixXd X = design(responses(cases, tau_s_), dx);
     const LeastSquaresFit linear = solveLeastSquares(X, y);
     gains_ = linear.coefficients;
     const Eigen::VectorXd sigma = parameterSigma(jacobian(cases, X, dx), linear.rss);
 
     FitSummary summary;
-    summary.iterations = refined.iterations;
+    summary.iterations = int(refined.iterations.size());
     const Eigen::Index n = Eigen::Index(K);
     for (Eigen::Index k = 0; k < n; ++k) {
         const LagTerm& term = terms_[std::size_t(k)];
@@ -230,11 +244,12 @@ FitSummary LaggedRegression::fit(const std::vector<LagCase>& cases,
                                  "(%2 s): the training runs do not pin it down")
                                  .arg(term.name, messageNumber(tau));
     }
-    if (!refined.converged)
+    if (refined.termination_type != ceres::CONVERGENCE)
         summary.notes << QStringLiteral(
                              "the time-constant search stopped after %1 iterations "
-                             "without converging")
-                             .arg(refined.iterations);
+                             "without converging: %2")
+                             .arg(refined.iterations.size())
+                             .arg(QString::fromStdString(refined.message));
     return summary;
 }
 

@@ -4,7 +4,7 @@
 // where e_k is the unit-gain first-order lag, time constant τ_k, of one
 // heat-source input (without position dependence: E = Σ_k a_k·e_k(t)).
 // Variable projection: for given τ the gains are a linear least squares, so
-// only the τ are searched (log-spaced grid, then Nelder–Mead in log τ).
+// only the τ are searched (log-spaced grid, then Ceres in log τ).
 
 #include <Eigen/Core>
 #include <QString>
