@@ -6,6 +6,7 @@
 #include <QProcess>
 #include <QStandardPaths>
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "app/cli/CliCommon.h"
@@ -76,7 +77,9 @@ double onlineStepMicroseconds() {
         sink += screw.thermalError_um(table).back();
     }
     const double us = timer.nsecsElapsed() * 1e-3 / steps;
-    return sink == sink ? us : us;  // keep the work observable
+    // Using the result keeps the work from being optimised away, and checks it.
+    if (!std::isfinite(sink)) throw CliError(QStringLiteral("online step gave a non-finite error"));
+    return us;
 }
 
 /// The same campaign in NumPy/SciPy (solve_banded), when Python has SciPy.

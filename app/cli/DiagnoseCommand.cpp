@@ -11,7 +11,7 @@
 namespace driftlab::cli {
 namespace {
 
-QJsonObject findingJson(const diagnosis::Finding& f) {
+QJsonObject findingJson(const diagnosis::Finding& f, const diagnosis::ResidualSummary& before) {
     return {
         {QStringLiteral("cause"), f.cause},
         {QStringLiteral("confidence"), jsonNumber(f.confidence)},
@@ -22,12 +22,12 @@ QJsonObject findingJson(const diagnosis::Finding& f) {
         {QStringLiteral("bic_drop"), jsonNumber(f.bic_drop)},
         {QStringLiteral("evidence"), f.evidence},
         {QStringLiteral("gain"),
-         QJsonObject{{QStringLiteral("test_rms_before_um"), jsonNumber(f.test_rms_before_um)},
-                     {QStringLiteral("test_rms_after_um"), jsonNumber(f.test_rms_after_um)},
+         QJsonObject{{QStringLiteral("test_rms_before_um"), jsonNumber(before.error_rms_um)},
+                     {QStringLiteral("test_rms_after_um"), jsonNumber(f.test_after.error_rms_um)},
                      {QStringLiteral("test_temperature_rms_before_K"),
-                      jsonNumber(f.test_temperature_rms_before_K)},
+                      jsonNumber(before.temperature_rms_K)},
                      {QStringLiteral("test_temperature_rms_after_K"),
-                      jsonNumber(f.test_temperature_rms_after_K)},
+                      jsonNumber(f.test_after.temperature_rms_K)},
                      {QStringLiteral("reduction"), jsonNumber(f.reduction)}}}};
 }
 
@@ -83,7 +83,7 @@ int diagnoseCommand(const QStringList& args) {
     if (!r.ok()) throw CliError(r.error);
 
     QJsonArray findings;
-    for (const auto& f : r.findings) findings << findingJson(f);
+    for (const auto& f : r.findings) findings << findingJson(f, r.base_test);
     QJsonObject json{
         {QStringLiteral("base_model"), QStringLiteral("screw-fdm")},
         {QStringLiteral("train_runs"), QJsonArray::fromStringList(r.train_runs)},
@@ -114,7 +114,7 @@ int diagnoseCommand(const QStringList& args) {
             adopted = storeFitIfFromDatabase(
                 parser, {0, QStringLiteral("heat-transfer+") + f.cause,
                          QStringLiteral("positioning"), r.train_runs, r.test_runs, parameters,
-                         findingJson(f)[QStringLiteral("gain")].toObject()});
+                         findingJson(f, r.base_test)[QStringLiteral("gain")].toObject()});
         }
         auto store = openSourceStore(parser);
         QString error;

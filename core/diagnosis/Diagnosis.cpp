@@ -167,10 +167,6 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
             const double n = double(candidateTrain.count);
             f.bic_drop = n * std::log(baseTrain.chi2 / candidateTrain.chi2) - std::log(n);
             f.reduction = 1 - std::sqrt(candidateTest.chi2 / baseTest.chi2);
-            f.test_rms_before_um = result.base_test.error_rms_um;
-            f.test_rms_after_um = after.error_rms_um;
-            f.test_temperature_rms_before_K = result.base_test.temperature_rms_K;
-            f.test_temperature_rms_after_K = after.temperature_rms_K;
             f.test_after = after;
             f.significant =
                 f.bic_drop > options.min_bic_drop && f.reduction > options.min_test_gain;

@@ -39,12 +39,12 @@ struct Finding {
     bool significant = false;
     double bic_drop = 0;
     QString evidence;
-    double test_rms_before_um = 0, test_rms_after_um = 0;
-    double test_temperature_rms_before_K = 0, test_temperature_rms_after_K = 0;
     /// 1 − √(χ²_after/χ²_before) on the held-out runs, temperatures and
     /// positioning errors together (a sensor effect shows in temperatures).
     double reduction = 0;
-    ResidualSummary test_after;  ///< what the extension leaves on the held-out runs
+    /// What the extension leaves on the held-out runs (the base model's is
+    /// DiagnosisResult::base_test).
+    ResidualSummary test_after;
     models::FitSummary fit;
     std::shared_ptr<const models::HeatTransferModel> model;  ///< the fitted extension
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/models/ModelError.h"
 #include "core/models/RunDataAccess.h"
 
 namespace driftlab::diagnosis {
@@ -139,7 +140,8 @@ QString describeStructure(const std::vector<models::ReadingResiduals>& residuals
                     x.push_back(models::valueAt(t.rise_K, residuals[k].points[j].time_s,
                                                 runs[k].max_gap_s, runs[k].run_id));
                     y.push_back(residuals[k].error_um[j]);
-                } catch (...) {
+                } catch (const models::ModelError&) {
+                    // a reading in a gap of this channel: no pair, not an error
                 }
             }
         }

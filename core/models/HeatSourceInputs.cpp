@@ -16,11 +16,11 @@ constexpr double kTimeTolerance_s = 1e-6;
 
 /// rad/s of screw per mm/min of feed.
 double screwRadPerSPerFeed(const RunData& run, const QString& model) {
-    if (!run.lead_mm || !(*run.lead_mm > 0))
+    if (!run.lead_mm() || !(*run.lead_mm() > 0))
         throw ModelError(QStringLiteral("model '%1' needs the screw lead to turn feed into screw "
                                         "speed; the campaign of run '%2' has no screw lead")
                              .arg(model, run.run_id));
-    return kRpmToRadPerS / *run.lead_mm;
+    return kRpmToRadPerS / *run.lead_mm();
 }
 
 void requireSignal(const RunData& run, const Signal& signal, const QString& model,

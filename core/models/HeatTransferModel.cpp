@@ -90,15 +90,10 @@ ScrewRunOutputs HeatTransferModel::simulateWith(const double* values, const RunD
     return out;
 }
 
-ScrewRunOutputs HeatTransferModel::simulate(const RunData& run,
-                                            const std::vector<PredictionPoint>& at) const {
-    if (values_.empty()) throw ModelError(QStringLiteral("model 'heat-transfer' is not fitted"));
-    return simulateWith(values_.data(), run, prepareScrewRun(run, options_.dt_s, name()), at);
-}
-
 Eigen::VectorXd HeatTransferModel::predictRun(const RunData& run,
                                               const std::vector<PredictionPoint>& at) const {
-    const auto out = simulate(run, at);
+    const auto out =
+        simulateWith(values_.data(), run, prepareScrewRun(run, options_.dt_s, name()), at);
     return Eigen::Map<const Eigen::VectorXd>(out.error_um.data(),
                                              Eigen::Index(out.error_um.size()));
 }

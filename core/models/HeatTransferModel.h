@@ -74,8 +74,6 @@ public:
     /// The fitted values, in the variant's order.
     const std::vector<double>& values() const { return values_; }
     const ScrewModelVariant& variant() const { return variant_; }
-    /// Simulated readings of a run with the fitted values (temperatures and errors).
-    ScrewRunOutputs simulate(const RunData& run, const std::vector<PredictionPoint>& at) const;
     /// What the fitted model misses on a run (throws ModelError on bad data).
     ReadingResiduals residuals(const RunData& run) const;
     const HeatTransferOptions& options() const { return options_; }

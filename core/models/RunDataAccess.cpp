@@ -87,7 +87,7 @@ Eigen::MatrixXd risesAt(const RunData& run, const QStringList& channelIds,
 const TemperatureRise& channelForRole(const RunData& run, ChannelRole role, const QString& model) {
     const TemperatureRise* best = nullptr;
     auto distance = [&](const TemperatureRise& t) {
-        return t.position_mm ? std::abs(*t.position_mm - run.fixed_end_mm)
+        return t.position_mm ? std::abs(*t.position_mm - run.fixedEnd_mm())
                              : std::numeric_limits<double>::infinity();
     };
     for (const TemperatureRise& t : run.temperatures)
@@ -102,7 +102,7 @@ const TemperatureRise& channelForRole(const RunData& run, ChannelRole role, cons
 Eigen::VectorXd positionsFromFixedEnd(const RunData& run, const std::vector<PredictionPoint>& at) {
     Eigen::VectorXd dx(Eigen::Index(at.size()));
     for (std::size_t p = 0; p < at.size(); ++p)
-        dx[Eigen::Index(p)] = at[p].position_mm - run.fixed_end_mm;
+        dx[Eigen::Index(p)] = at[p].position_mm - run.fixedEnd_mm();
     return dx;
 }
 

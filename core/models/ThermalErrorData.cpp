@@ -216,10 +216,6 @@ RunData runData(const Campaign& campaign, const Run& run, const DatasetOptions& 
     } else {
         data.observations = driftErrors(run, options.target_channel);
     }
-    if (campaign.screw) {
-        data.fixed_end_mm = campaign.screw->fixed_end_mm;
-        data.lead_mm = campaign.screw->lead_mm;
-    }
     data.screw = campaign.screw;
     data.nut_length_mm = campaign.nut_length_mm;
     data.interferometer = campaign.interferometer;

@@ -68,10 +68,8 @@ struct TemperatureRise {
 struct RunData {
     QString run_id;
     RunKind kind = RunKind::Moving;
-    QString target_channel;         ///< empty: positioning error
-    double fixed_end_mm = 0;        ///< the screw's fixed end: zero of the position gain
-    std::optional<double> lead_mm;  ///< screw lead, when the campaign has a screw
-    std::optional<Screw> screw;     ///< the campaign's screw, for the physics models
+    QString target_channel;      ///< empty: positioning error
+    std::optional<Screw> screw;  ///< the campaign's screw
     std::optional<double> nut_length_mm;
     std::optional<Interferometer> interferometer;
     double max_gap_s = 120;  ///< from DatasetOptions
@@ -82,6 +80,11 @@ struct RunData {
     Signal spindle_speed_rpm;  ///< the first speed channel; no name when the campaign has none
     std::vector<MotionSegment> motion;
 
+    /// The screw's fixed end, zero of the position gain (0 without a screw).
+    double fixedEnd_mm() const { return screw ? screw->fixed_end_mm : 0.0; }
+    std::optional<double> lead_mm() const {
+        return screw ? std::optional<double>(screw->lead_mm) : std::nullopt;
+    }
     /// A positioning error depends on the axis position; a drift channel does not.
     bool positionDependent() const { return target_channel.isEmpty(); }
     std::vector<PredictionPoint> observationPoints() const;

@@ -79,8 +79,4 @@ SimulationThroughput measureSimulationThroughput(int repetitions) {
     return result;
 }
 
-double measureSimulationCellStepsPerSecond() {
-    return measureSimulationThroughput().cell_steps_per_s;
-}
-
 }  // namespace driftlab::physics

@@ -39,7 +39,4 @@ struct SimulationThroughput {
 /// the medians. Takes about 0.1 s per repetition on a current desktop core.
 SimulationThroughput measureSimulationThroughput(int repetitions = 5);
 
-/// The median cell-steps per second of measureSimulationThroughput().
-double measureSimulationCellStepsPerSecond();
-
 }  // namespace driftlab::physics

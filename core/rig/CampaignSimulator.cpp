@@ -77,15 +77,16 @@ void validateSpec(const RigSpec& spec, const physics::ScrewThermalParameters& sc
     if (spec.targets < 2) throw std::invalid_argument("simulated rig: at least 2 targets");
     const double screwFrom = screw.fixed_end_axis_mm;
     const double screwTo = screwFrom + screw.length_m * 1e3;
-    if (spec.travel_mm.from_mm - 10 < screwFrom || spec.travel_mm.to_mm + 10 > screwTo)
-        throw std::invalid_argument(
-            QStringLiteral("simulated rig: travel %1–%2 mm (with 10 mm overrun) is not on the "
-                           "screw, which runs %3–%4 mm")
-                .arg(spec.travel_mm.from_mm)
-                .arg(spec.travel_mm.to_mm)
-                .arg(screwFrom)
-                .arg(screwTo)
-                .toStdString());
+    // The nut never leaves the travel (the passes' targets sit inside it by
+    // their overrun), so the travel must lie on the screw.
+    if (spec.travel_mm.from_mm < screwFrom || spec.travel_mm.to_mm > screwTo)
+        throw std::invalid_argument(QStringLiteral("simulated rig: travel %1–%2 mm is not on the "
+                                                   "screw, which runs %3–%4 mm")
+                                        .arg(spec.travel_mm.from_mm)
+                                        .arg(spec.travel_mm.to_mm)
+                                        .arg(screwFrom)
+                                        .arg(screwTo)
+                                        .toStdString());
     QSet<QString> ids;
     for (const auto& run : spec.runs) {
         if (!isValidIdentifier(run.id) || ids.contains(run.id))

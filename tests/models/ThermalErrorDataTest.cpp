@@ -47,9 +47,9 @@ TEST(ThermalErrorData, positioningErrorIsTheDeviationMinusCycleZero) {
         EXPECT_NEAR(o.error_um, 1e-5 * o.time_s * o.position_mm, 1e-12);
     }
     EXPECT_TRUE(run.positionDependent());
-    EXPECT_DOUBLE_EQ(run.fixed_end_mm, test::kFixedEndMm);
-    ASSERT_TRUE(run.lead_mm);
-    EXPECT_DOUBLE_EQ(*run.lead_mm, test::kLeadMm);
+    EXPECT_DOUBLE_EQ(run.fixedEnd_mm(), test::kFixedEndMm);
+    ASSERT_TRUE(run.lead_mm());
+    EXPECT_DOUBLE_EQ(*run.lead_mm(), test::kLeadMm);
 }
 
 TEST(ThermalErrorData, riseIsReferencedToTheMedianOfTheFirstMinute) {
