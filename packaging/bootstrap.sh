@@ -35,6 +35,8 @@ install_packages() {
 build_project() {
     log "building in $build"
     export CCACHE_DIR=${CCACHE_DIR:-$HOME/.cache/ccache}
+    # Share the cache between build folders and work trees.
+    export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$(dirname "$root")} CCACHE_NOHASHDIR=${CCACHE_NOHASHDIR:-true}
     cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
         -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null
     # Two cores on the reference machine; more jobs only thrash memory.
