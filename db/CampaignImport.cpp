@@ -1,21 +1,112 @@
-// CampaignStore::importCampaign: a whole campaign stored in one transaction.
+// Campaigns into the store, from memory (CampaignStore::importCampaign) or
+// streamed from a bundle (importBundle), through one writer inside one transaction.
+#include "db/CampaignImport.h"
+
 #include <QSqlError>
 #include <QSqlQuery>
-#include <cmath>
+#include <memory>
 
-#include "db/CampaignStore.h"
+#include "core/bundle/BundleReader.h"
+#include "db/SampleBlocks.h"
 #include "db/SqlValues.h"
 #include "db/SqliteStatement.h"
 
 namespace driftlab::db {
 namespace {
 
-/// Runs prepared statements and turns the first failure into a thrown message,
-/// so the import reads as a straight sequence inside one transaction.
-class Inserter {
+/// Writes one campaign: metadata and runs first (begin), then sample rows as
+/// they come, then motion and positioning (finish). Throws QString on failure;
+/// the caller owns the transaction.
+class CampaignWriter : public SampleRowSink {
 public:
-    explicit Inserter(QSqlDatabase& db) : m_db(db) {}
+    explicit CampaignWriter(QSqlDatabase& db) : m_db(db) {}
 
+    void begin(const Campaign& c) override {
+        m_campaignId =
+            insert(QStringLiteral(
+                       "INSERT INTO campaign (name, nut_length_mm, travel_from_mm, travel_to_mm, "
+                       "extra_json) VALUES (?, ?, ?, ?, ?)"),
+                   {c.name, toSql(c.nut_length_mm),
+                    toSql(c.travel_mm ? std::optional(c.travel_mm->from_mm) : std::nullopt),
+                    toSql(c.travel_mm ? std::optional(c.travel_mm->to_mm) : std::nullopt),
+                    jsonText(c.extra)});
+        insert(QStringLiteral("INSERT INTO machine VALUES (?, ?, ?, ?, ?)"),
+               {m_campaignId, text(c.machine.name), text(c.machine.axis),
+                text(c.machine.controller), jsonText(c.machine.extra)});
+        if (const auto& s = c.screw)
+            insert(QStringLiteral("INSERT INTO screw VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+                   {m_campaignId, s->length_mm, s->diameter_mm, s->lead_mm, s->fixed_end_mm,
+                    s->mounting, s->alpha_per_K, s->density_kg_m3, s->specific_heat_J_kgK,
+                    s->conductivity_W_mK, jsonText(s->extra)});
+        if (const auto& i = c.interferometer)
+            insert(QStringLiteral("INSERT INTO interferometer VALUES (?, ?, ?, ?)"),
+                   {m_campaignId, i->dead_path_mm, int(i->environment_compensation),
+                    jsonText(i->extra)});
+
+        // column_ordinal ties a channel to its column in the sample blocks.
+        auto columnOrdinal = [&](const QString& name) -> QVariant {
+            auto it = std::find(c.sample_columns.begin(), c.sample_columns.end(), name);
+            return it == c.sample_columns.end() ? QVariant(QMetaType(QMetaType::Int))
+                                                : QVariant(int(it - c.sample_columns.begin()));
+        };
+        const QString channelSql = QStringLiteral(
+            "INSERT INTO channel (campaign_id, name, quantity, role, location, position_mm, "
+            "declared_ordinal, column_ordinal, extra_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        for (std::size_t k = 0; k < c.channels.size(); ++k) {
+            const Channel& ch = c.channels[k];
+            insert(channelSql, {m_campaignId, ch.id, toString(ch.quantity), toString(ch.role),
+                                text(ch.location), toSql(ch.position_mm), int(k),
+                                columnOrdinal(ch.id), jsonText(ch.extra)});
+        }
+        for (std::size_t k = 0; k < c.sample_columns.size(); ++k)
+            if (isAxisColumn(c.sample_columns[k]))
+                insert(channelSql,
+                       {m_campaignId, c.sample_columns[k], QStringLiteral("axis"),
+                        QVariant(QMetaType(QMetaType::QString)), QStringLiteral(""),
+                        QVariant(QMetaType(QMetaType::Double)), QVariant(QMetaType(QMetaType::Int)),
+                        int(k), QStringLiteral("{}")});
+
+        for (std::size_t r = 0; r < c.runs.size(); ++r) {
+            const Run& run = c.runs[r];
+            m_runIds.push_back(insert(
+                QStringLiteral("INSERT INTO run (campaign_id, name, ordinal, kind, feed_mm_min, "
+                               "range_from_mm, range_to_mm, description, extra_json) "
+                               "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+                {m_campaignId, run.id, int(r), toString(run.kind), toSql(run.feed_mm_min),
+                 toSql(run.range_mm ? std::optional(run.range_mm->from_mm) : std::nullopt),
+                 toSql(run.range_mm ? std::optional(run.range_mm->to_mm) : std::nullopt),
+                 text(run.description), jsonText(run.extra)}));
+        }
+        m_samples = std::make_unique<SampleBlockWriter>(sqliteHandle(m_db), c.sample_columns.size(),
+                                                        m_runIds);
+    }
+
+    void row(std::size_t runIndex, double time_s, const double* values) override {
+        m_samples->append(runIndex, time_s, values);
+    }
+
+    /// Writes what follows the samples; returns the campaign id.
+    qint64 finish(const Campaign& c, const QByteArray& contentSha256) {
+        m_samples->flush();
+        for (std::size_t r = 0; r < c.runs.size(); ++r) {
+            const qint64 runId = m_runIds[r];
+            for (const MotionSegment& m : c.runs[r].motion)
+                insert(QStringLiteral("INSERT INTO motion_segment VALUES (?, ?, ?, ?, ?, ?)"),
+                       {runId, m.start_s, m.end_s, m.from_mm, m.to_mm, m.feed_mm_min});
+            for (const PositioningMeasurement& p : c.runs[r].positioning)
+                insert(
+                    QStringLiteral("INSERT INTO positioning VALUES (?, ?, ?, ?, ?, ?)"),
+                    {runId, p.time_s, p.cycle, p.target_mm,
+                     p.direction == Direction::Positive ? QStringLiteral("+") : QStringLiteral("-"),
+                     p.deviation_um});
+        }
+        if (!contentSha256.isEmpty())
+            insert(QStringLiteral("UPDATE campaign SET content_sha256 = ? WHERE id = ?"),
+                   {QString::fromLatin1(contentSha256), m_campaignId});
+        return m_campaignId;
+    }
+
+private:
     qint64 insert(const QString& sql, const QVariantList& values) {
         QSqlQuery q(m_db);
         if (!q.prepare(sql)) throw QStringLiteral("prepare failed: ") + q.lastError().text();
@@ -24,9 +115,23 @@ public:
         return q.lastInsertId().toLongLong();
     }
 
-private:
     QSqlDatabase& m_db;
+    qint64 m_campaignId = 0;
+    std::vector<qint64> m_runIds;
+    std::unique_ptr<SampleBlockWriter> m_samples;
 };
+
+/// The campaign already stored with this content, if any.
+std::optional<std::pair<qint64, QString>> storedWithContent(QSqlDatabase& db,
+                                                            const QByteArray& sha256) {
+    QSqlQuery q(db);
+    q.prepare(
+        QStringLiteral("SELECT id, name || ' (imported ' || imported_at || ')' FROM campaign "
+                       "WHERE content_sha256 = ? ORDER BY id LIMIT 1"));
+    q.addBindValue(QString::fromLatin1(sha256));
+    if (q.exec() && q.next()) return std::pair(q.value(0).toLongLong(), q.value(1).toString());
+    return std::nullopt;
+}
 
 }  // namespace
 
@@ -37,107 +142,75 @@ std::optional<qint64> CampaignStore::importCampaign(const Campaign& c, QString* 
         return std::nullopt;
     }
     try {
-        Inserter sql(m_db);
-        const qint64 campaignId = sql.insert(
-            QStringLiteral(
-                "INSERT INTO campaign (name, nut_length_mm, travel_from_mm, travel_to_mm, "
-                "extra_json) VALUES (?, ?, ?, ?, ?)"),
-            {c.name, toSql(c.nut_length_mm),
-             toSql(c.travel_mm ? std::optional(c.travel_mm->from_mm) : std::nullopt),
-             toSql(c.travel_mm ? std::optional(c.travel_mm->to_mm) : std::nullopt),
-             jsonText(c.extra)});
-        sql.insert(QStringLiteral("INSERT INTO machine VALUES (?, ?, ?, ?, ?)"),
-                   {campaignId, text(c.machine.name), text(c.machine.axis),
-                    text(c.machine.controller), jsonText(c.machine.extra)});
-        if (const auto& s = c.screw)
-            sql.insert(QStringLiteral("INSERT INTO screw VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
-                       {campaignId, s->length_mm, s->diameter_mm, s->lead_mm, s->fixed_end_mm,
-                        s->mounting, s->alpha_per_K, s->density_kg_m3, s->specific_heat_J_kgK,
-                        s->conductivity_W_mK, jsonText(s->extra)});
-        if (const auto& i = c.interferometer)
-            sql.insert(QStringLiteral("INSERT INTO interferometer VALUES (?, ?, ?, ?)"),
-                       {campaignId, i->dead_path_mm, int(i->environment_compensation),
-                        jsonText(i->extra)});
-
-        // Channel row id of every samples.csv column, in column order.
-        auto columnOrdinal = [&](const QString& name) -> QVariant {
-            auto it = std::find(c.sample_columns.begin(), c.sample_columns.end(), name);
-            return it == c.sample_columns.end() ? QVariant(QMetaType(QMetaType::Int))
-                                                : QVariant(int(it - c.sample_columns.begin()));
-        };
-        std::vector<qint64> columnChannel(c.sample_columns.size());
-        const QString channelSql = QStringLiteral(
-            "INSERT INTO channel (campaign_id, name, quantity, role, location, position_mm, "
-            "declared_ordinal, column_ordinal, extra_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
-        for (std::size_t k = 0; k < c.channels.size(); ++k) {
-            const Channel& ch = c.channels[k];
-            QVariant ordinal = columnOrdinal(ch.id);
-            qint64 id =
-                sql.insert(channelSql, {campaignId, ch.id, toString(ch.quantity), toString(ch.role),
-                                        text(ch.location), toSql(ch.position_mm), int(k), ordinal,
-                                        jsonText(ch.extra)});
-            if (!ordinal.isNull()) columnChannel[std::size_t(ordinal.toInt())] = id;
-        }
-        for (std::size_t k = 0; k < c.sample_columns.size(); ++k)
-            if (isAxisColumn(c.sample_columns[k]))
-                columnChannel[k] =
-                    sql.insert(channelSql,
-                               {campaignId, c.sample_columns[k], QStringLiteral("axis"),
-                                QVariant(QMetaType(QMetaType::QString)), QStringLiteral(""),
-                                QVariant(QMetaType(QMetaType::Double)),
-                                QVariant(QMetaType(QMetaType::Int)), int(k), QStringLiteral("{}")});
-
-        SqliteStatement sampleInsert(
-            sqliteHandle(m_db),
-            "INSERT INTO sample (run_id, t, channel_id, value) VALUES (?, ?, ?, ?)");
-        if (!sampleInsert.ok()) throw sampleInsert.error();
+        CampaignWriter writer(m_db);
+        writer.begin(c);
         std::size_t totalRows = 0, doneRows = 0;
         for (const Run& run : c.runs) totalRows += run.samples.rowCount();
-
+        std::vector<double> row(c.sample_columns.size());
         for (std::size_t r = 0; r < c.runs.size(); ++r) {
-            const Run& run = c.runs[r];
-            const qint64 runId = sql.insert(
-                QStringLiteral("INSERT INTO run (campaign_id, name, ordinal, kind, feed_mm_min, "
-                               "range_from_mm, range_to_mm, description, extra_json) "
-                               "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"),
-                {campaignId, run.id, int(r), toString(run.kind), toSql(run.feed_mm_min),
-                 toSql(run.range_mm ? std::optional(run.range_mm->from_mm) : std::nullopt),
-                 toSql(run.range_mm ? std::optional(run.range_mm->to_mm) : std::nullopt),
-                 text(run.description), jsonText(run.extra)});
-            for (const MotionSegment& m : run.motion)
-                sql.insert(QStringLiteral("INSERT INTO motion_segment VALUES (?, ?, ?, ?, ?, ?)"),
-                           {runId, m.start_s, m.end_s, m.from_mm, m.to_mm, m.feed_mm_min});
-            for (const PositioningMeasurement& p : run.positioning)
-                sql.insert(
-                    QStringLiteral("INSERT INTO positioning VALUES (?, ?, ?, ?, ?, ?)"),
-                    {runId, p.time_s, p.cycle, p.target_mm,
-                     p.direction == Direction::Positive ? QStringLiteral("+") : QStringLiteral("-"),
-                     p.deviation_um});
-
-            const SampleSeries& s = run.samples;
-            sampleInsert.bind(1, runId);
-            for (std::size_t row = 0; row < s.rowCount(); ++row) {
-                sampleInsert.bind(2, s.time_s[row]);
-                for (std::size_t k = 0; k < s.values.size(); ++k) {
-                    const double v = s.values[k][row];
-                    if (std::isnan(v)) continue;  // a missing sample has no row
-                    sampleInsert.bind(3, columnChannel[k]);
-                    sampleInsert.bind(4, v);
-                    if (!sampleInsert.execute()) throw sampleInsert.error();
-                }
+            const SampleSeries& s = c.runs[r].samples;
+            for (std::size_t i = 0; i < s.rowCount(); ++i) {
+                for (std::size_t k = 0; k < row.size(); ++k) row[k] = s.values[k][i];
+                writer.row(r, s.time_s[i], row.data());
                 if ((++doneRows & 0x3FFF) == 0 && progress &&
                     !progress(double(doneRows) / totalRows))
                     throw QStringLiteral("import cancelled");
             }
         }
+        const qint64 id = writer.finish(c, {});
         if (!m_db.commit()) throw QStringLiteral("commit failed: ") + m_db.lastError().text();
         if (progress) progress(1.0);
-        return campaignId;
+        return id;
     } catch (const QString& why) {
         m_db.rollback();
         *error = QStringLiteral("import of '%1' into %2 rolled back: %3").arg(c.name, path(), why);
         return std::nullopt;
     }
+}
+
+BundleImportResult importBundle(CampaignStore& store, const BundleSource& source,
+                                const BundleImportOptions& options) {
+    BundleImportResult result;
+    QString error;
+    result.contentSha256 = bundleContentSha256(source, &error);
+    if (result.contentSha256.isEmpty()) {
+        result.error = source.location() + QStringLiteral(": ") + error;
+        return result;
+    }
+    QSqlDatabase& db = store.database();
+    if (auto earlier = storedWithContent(db, result.contentSha256); earlier && !options.again) {
+        result.duplicateOf = earlier->first;
+        result.error = QStringLiteral(
+                           "%1 is already in %2 as campaign %3, '%4'; --again imports "
+                           "it once more")
+                           .arg(source.location(), store.path())
+                           .arg(earlier->first)
+                           .arg(earlier->second);
+        return result;
+    }
+    if (!db.transaction()) {
+        result.error =
+            store.path() + QStringLiteral(": cannot start a transaction: ") + db.lastError().text();
+        return result;
+    }
+    try {
+        CampaignWriter writer(db);
+        BundleReadResult read = readBundle(source, {options.progress, &writer});
+        if (!read.ok()) {
+            BundleError e = *read.error;
+            e.file = source.displayPath(e.file);
+            throw e.toString();
+        }
+        result.warnings = read.warnings;
+        result.name = read.campaign->name;
+        const qint64 id = writer.finish(*read.campaign, result.contentSha256);
+        if (!db.commit()) throw QStringLiteral("commit failed: ") + db.lastError().text();
+        result.campaignId = id;
+    } catch (const QString& why) {
+        db.rollback();
+        result.error = why;
+    }
+    return result;
 }
 
 }  // namespace driftlab::db

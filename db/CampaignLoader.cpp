@@ -1,10 +1,10 @@
 // CampaignStore::loadCampaign: reads a campaign back in the shape it was imported.
-#include <QHash>
 #include <QSqlError>
 #include <QSqlQuery>
 #include <limits>
 
 #include "db/CampaignStore.h"
+#include "db/SampleBlocks.h"
 #include "db/SqlValues.h"
 #include "db/SqliteStatement.h"
 
@@ -23,27 +23,6 @@ QSqlQuery select(const QSqlDatabase& db, const QString& sql, qint64 id) {
 std::optional<RangeMm> rangeOf(const QVariant& from, const QVariant& to) {
     if (from.isNull() || to.isNull()) return std::nullopt;
     return RangeMm{from.toDouble(), to.toDouble()};
-}
-
-/// Rebuilds the wide series from the long sample rows: one row per distinct time.
-void loadSamples(sqlite3* handle, qint64 runId, const QHash<qint64, int>& columnOfChannel,
-                 SampleSeries& s) {
-    SqliteStatement q(handle,
-                      "SELECT channel_id, t, value FROM sample WHERE run_id = ? ORDER BY t");
-    if (!q.ok()) throw q.error();
-    q.bind(1, runId);
-    s.values.assign(s.columns.size(), {});
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    while (q.nextRow()) {
-        const qint64 channel = sqlite3_column_int64(q.get(), 0);
-        const double t = sqlite3_column_double(q.get(), 1);
-        if (s.time_s.empty() || t != s.time_s.back()) {
-            s.time_s.push_back(t);
-            for (auto& column : s.values) column.push_back(nan);
-        }
-        s.values[std::size_t(columnOfChannel.value(channel))].back() =
-            sqlite3_column_double(q.get(), 2);
-    }
 }
 
 }  // namespace
@@ -98,13 +77,10 @@ std::optional<Campaign> CampaignStore::loadCampaign(qint64 id, QString* error) c
                        "column_ordinal, extra_json FROM channel WHERE campaign_id = ? "
                        "ORDER BY declared_ordinal, column_ordinal"),
                    id);
-        QHash<qint64, int> columnOfChannel;
         std::vector<std::pair<int, QString>> columns;
         while (q.next()) {
-            if (!q.value(7).isNull()) {
-                columnOfChannel.insert(q.value(0).toLongLong(), q.value(7).toInt());
+            if (!q.value(7).isNull())
                 columns.emplace_back(q.value(7).toInt(), q.value(1).toString());
-            }
             if (q.value(6).isNull()) continue;  // an axis column, not a declared channel
             Channel ch;
             ch.id = q.value(1).toString();
@@ -157,7 +133,7 @@ std::optional<Campaign> CampaignStore::loadCampaign(qint64 id, QString* error) c
                      p.value(4).toDouble()});
 
             run.samples.columns = c.sample_columns;
-            loadSamples(handle, runId, columnOfChannel, run.samples);
+            loadSampleBlocks(handle, runId, run.samples);
             c.runs.push_back(std::move(run));
         }
         return c;

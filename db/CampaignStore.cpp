@@ -56,7 +56,9 @@ std::vector<CampaignSummary> CampaignStore::listCampaigns() const {
     QSqlQuery q(m_db);
     q.exec(QStringLiteral(
         "SELECT c.id, c.name, (SELECT count(*) FROM run r WHERE r.campaign_id = c.id), "
-        "(SELECT count(*) FROM sample s JOIN run r ON s.run_id = r.id WHERE r.campaign_id = c.id) "
+        "(SELECT coalesce(sum(b.present_count), 0) FROM sample_block b JOIN run r ON b.run_id = "
+        "r.id "
+        "WHERE r.campaign_id = c.id) "
         "FROM campaign c ORDER BY c.id"));
     while (q.next())
         out.push_back({q.value(0).toLongLong(), q.value(1).toString(), q.value(2).toInt(),

@@ -5,6 +5,9 @@
 #include <QSqlError>
 #include <QSqlQuery>
 
+#include "db/SampleBlocks.h"
+#include "db/SqliteStatement.h"
+
 // The migrations live in a static library; its resources must be registered
 // explicitly (from the global namespace, as Q_INIT_RESOURCE requires).
 static void registerMigrationResources() {
@@ -70,14 +73,27 @@ bool migrate(QSqlDatabase& db, QString* error, int target) {
             return false;
         }
         QSqlQuery q(db);
-        QStringList all = statements(QString::fromUtf8(file.readAll()));
-        all << QStringLiteral("PRAGMA user_version = %1").arg(version + 1);
-        for (const QString& statement : all) {
+        for (const QString& statement : statements(QString::fromUtf8(file.readAll()))) {
             if (!q.exec(statement)) {
                 *error = QStringLiteral("migration %1 failed: %2").arg(name, q.lastError().text());
                 db.rollback();
                 return false;
             }
+        }
+        // What SQL alone cannot do: v3 packs the old per-value sample rows into blocks.
+        if (version + 1 == 3) {
+            try {
+                moveSampleRowsIntoBlocks(sqliteHandle(db));
+            } catch (const QString& why) {
+                *error = QStringLiteral("migration %1 failed: %2").arg(name, why);
+                db.rollback();
+                return false;
+            }
+        }
+        if (!q.exec(QStringLiteral("PRAGMA user_version = %1").arg(version + 1))) {
+            *error = QStringLiteral("migration %1 failed: %2").arg(name, q.lastError().text());
+            db.rollback();
+            return false;
         }
         if (!db.commit()) {
             *error =

@@ -3,6 +3,7 @@
 
 #include "app/cli/CliCommon.h"
 #include "core/bundle/BundleWriter.h"
+#include "db/CampaignImport.h"
 #include "db/CampaignStore.h"
 
 namespace driftlab::cli {
@@ -24,33 +25,47 @@ std::unique_ptr<db::CampaignStore> openStore(const QCommandLineParser& parser) {
 
 int importCommand(const QStringList& args) {
     QCommandLineParser parser;
-    parseArguments(parser, args, {kDbOption}, QStringLiteral("BUNDLE"));
+    const QCommandLineOption again{
+        QStringLiteral("again"),
+        QStringLiteral("Import a bundle whose content the store already holds once more.")};
+    parseArguments(parser, args, {kDbOption, again}, QStringLiteral("BUNDLE"));
     if (parser.positionalArguments().size() != 1)
-        throw CliError(QStringLiteral("give one BUNDLE folder"), 2);
+        throw CliError(QStringLiteral("give one BUNDLE folder or .zip"), 2);
+    const auto source = openBundleOrFail(parser.positionalArguments().front());
     auto store = openStore(parser);
-    // Read (and validate) the whole bundle before touching the database.
-    const Campaign campaign = readBundleOrFail(parser.positionalArguments().front());
-    QString error;
-    auto id = store->importCampaign(
-        campaign, &error, [](double f) { return printProgress(QStringLiteral("importing"), f); });
-    if (!id) throw CliError(error);
+    // Read, validated and stored in one streaming pass inside one transaction.
+    db::BundleImportOptions options;
+    options.progress = [](double f) { return printProgress(QStringLiteral("importing"), f); };
+    options.again = parser.isSet(again);
+    const db::BundleImportResult result = db::importBundle(*store, *source, options);
+    printWarnings(result.warnings);
+    if (!result.campaignId) throw CliError(result.error);
     if (parser.isSet(QStringLiteral("json")))
-        printJson({{QStringLiteral("campaign"), *id}, {QStringLiteral("name"), campaign.name}});
+        printJson({{QStringLiteral("campaign"), *result.campaignId},
+                   {QStringLiteral("name"), result.name},
+                   {QStringLiteral("content_sha256"), QString::fromLatin1(result.contentSha256)},
+                   {QStringLiteral("warnings"), QJsonArray::fromStringList(result.warnings)}});
     else
-        printLine(QString::number(*id));
+        printLine(QString::number(*result.campaignId));
     return 0;
 }
 
 int exportCommand(const QStringList& args) {
     QCommandLineParser parser;
-    const QCommandLineOption out{QStringLiteral("out"), QStringLiteral("Bundle folder to write."),
+    const QCommandLineOption out{QStringLiteral("out"),
+                                 QStringLiteral("Bundle folder to write (new or empty)."),
                                  QStringLiteral("DIR")};
-    parseArguments(parser, args, campaignSourceOptions() << out);
+    const QCommandLineOption force{
+        QStringLiteral("force"),
+        QStringLiteral("Replace a previous bundle in DIR as a whole (never a mix of two).")};
+    parseArguments(parser, args, campaignSourceOptions() << out << force);
     if (!parser.isSet(QStringLiteral("db")) || !parser.isSet(out))
         throw CliError(QStringLiteral("export needs --db FILE --campaign ID --out DIR"), 2);
     const Campaign campaign = loadCampaignSource(parser);
-    if (auto error = writeBundle(campaign, parser.value(out)))
-        throw CliError(parser.value(out) + QLatin1Char('/') + error->toString());
+    if (auto error =
+            writeBundle(campaign, parser.value(out),
+                        parser.isSet(force) ? ExistingBundle::Replace : ExistingBundle::Refuse))
+        throw CliError(error->toString());
     if (parser.isSet(QStringLiteral("json")))
         printJson(
             {{QStringLiteral("out"), parser.value(out)}, {QStringLiteral("name"), campaign.name}});

@@ -1,13 +1,13 @@
 #include "app/cli/CliCommon.h"
 
 #include <unistd.h>
-#include <QDir>
 #include <QJsonDocument>
 #include <cmath>
 #include <cstdio>
 
 #include "core/bundle/BundleReader.h"
 #include "db/CampaignStore.h"
+#include "db/ZipBundleSource.h"
 
 namespace driftlab::cli {
 
@@ -67,16 +67,29 @@ std::optional<qint64> storeFitIfFromDatabase(const QCommandLineParser& parser,
     return id;
 }
 
+std::unique_ptr<BundleSource> openBundleOrFail(const QString& path) {
+    QString error;
+    auto source = db::openBundleSource(path, &error);
+    if (!source) throw CliError(path + QStringLiteral(": ") + error);
+    return source;
+}
+
+void printWarnings(const QStringList& warnings) {
+    endProgressLine();
+    for (const QString& warning : warnings)
+        std::fprintf(stderr, "warning: %s\n", qPrintable(warning));
+}
+
 Campaign readBundleOrFail(const QString& path) {
+    const auto source = openBundleOrFail(path);
     BundleReadOptions options;
     options.progress = [](double f) { return printProgress(QStringLiteral("reading bundle"), f); };
-    BundleReadResult result = readBundle(path, options);
-    for (const QString& warning : result.warnings)
-        std::fprintf(stderr, "warning: %s\n", qPrintable(warning));
+    BundleReadResult result = readBundle(*source, options);
+    printWarnings(result.warnings);
     if (!result.ok()) {
         // Name the file by its full path so the user can open it at that line.
         BundleError e = *result.error;
-        if (e.file != path) e.file = QDir(path).filePath(e.file);
+        e.file = source->displayPath(e.file);
         throw CliError(e.toString());
     }
     return *result.campaign;

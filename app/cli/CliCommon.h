@@ -8,6 +8,7 @@
 #include <QStringList>
 #include <stdexcept>
 
+#include "core/bundle/BundleSource.h"
 #include "core/domain/Campaign.h"
 #include "db/ModelFitStore.h"
 
@@ -35,8 +36,12 @@ std::unique_ptr<db::CampaignStore> openSourceStore(const QCommandLineParser& par
 std::optional<qint64> storeFitIfFromDatabase(const QCommandLineParser& parser,
                                              const db::ModelFitRecord& record);
 
-/// Reads and validates a bundle folder; throws CliError with file:line:column: why.
+/// A bundle folder or .zip archive; throws CliError naming the path and why.
+std::unique_ptr<BundleSource> openBundleOrFail(const QString& path);
+/// Reads and validates a bundle (folder or .zip); throws CliError with file:line:column: why.
 Campaign readBundleOrFail(const QString& path);
+/// "warning: ..." lines on stderr.
+void printWarnings(const QStringList& warnings);
 
 /// Progress "label: 42%" on stderr, rewritten in place; returns true (never cancels).
 bool printProgress(const QString& label, double fraction);

@@ -78,8 +78,8 @@ int simulateCommand(const QStringList& args) {
         throw CliError(QString::fromStdString(e.what()));
     }
     const QString dir = parser.value(out);
-    if (auto error = writeBundle(campaign, dir))
-        throw CliError(dir + QLatin1Char('/') + error->toString());
+    if (auto error = writeBundle(campaign, dir, ExistingBundle::Replace))
+        throw CliError(error->toString());
 
     QJsonArray writtenPlots;
     if (recorder) {

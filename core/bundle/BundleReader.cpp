@@ -1,13 +1,13 @@
 #include "core/bundle/BundleReader.h"
 
-#include <QDir>
-#include <QFile>
 #include <QHash>
-#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
 #include "core/bundle/CampaignJson.h"
 #include "core/bundle/CsvTable.h"
+#include "core/bundle/ValueLimits.h"
 
 namespace driftlab {
 namespace {
@@ -17,53 +17,109 @@ const QString kSamplesFile = QStringLiteral("samples.csv");
 const QString kMotionFile = QStringLiteral("motion.csv");
 const QString kPositioningFile = QStringLiteral("positioning.csv");
 
-// Positions outside the travel by more than this are a unit mix-up, not noise.
-constexpr double kTravelToleranceMm = 1.0;
+/// Positions past the travel: an axis overshoots its end targets to reverse
+/// (ISO 230-2 overrun), so they are normal; counted for one warning per file.
+struct Overrun {
+    int count = 0;
+    int firstLine = 0;
+    double furthest_mm = 0;  ///< largest distance outside the travel
+};
 
 class BundleParser {
 public:
-    BundleParser(const QString& directory, const BundleReadOptions& options)
-        : m_dir(directory), m_options(options) {}
+    BundleParser(const BundleSource& source, const BundleReadOptions& options)
+        : m_source(source), m_options(options) {}
 
     Campaign parse() {
-        QFile json(m_dir.filePath(kCampaignFile));
-        if (!json.open(QIODevice::ReadOnly))
+        QString error;
+        auto json = m_source.open(kCampaignFile, &error);
+        if (!json)
             throw BundleException(
                 {kCampaignFile, 0, 0,
-                 QStringLiteral("cannot open in '%1': %2").arg(m_dir.path(), json.errorString())});
-        m_campaign = campaignFromJson(json.readAll(), kCampaignFile);
+                 QStringLiteral("cannot open: %1 (is this a campaign bundle?)").arg(error)});
+        m_campaign = campaignFromJson(json->readAll(), kCampaignFile);
         for (std::size_t i = 0; i < m_campaign.runs.size(); ++i)
             m_runIndex.insert(m_campaign.runs[i].id, int(i));
+        setPositionLimits();
 
         readSamples();
-        if (m_dir.exists(kMotionFile)) readMotion();
-        if (m_dir.exists(kPositioningFile)) readPositioning();
-        checkTemperatureUnits();
+        if (m_source.contains(kMotionFile)) readMotion();
+        if (m_source.contains(kPositioningFile)) readPositioning();
         return std::move(m_campaign);
     }
 
     QStringList warnings;
 
 private:
-    Run& runOf(const CsvTable& csv, int column) {
+    std::unique_ptr<CsvTable> openCsv(const QString& name) {
+        QString error;
+        auto device = m_source.open(name, &error);
+        if (!device) throw BundleException({name, 0, 0, QStringLiteral("cannot open: ") + error});
+        auto csv = std::make_unique<CsvTable>(std::move(device), name);
+        if (csv->europeanFormat())
+            warnings << QStringLiteral(
+                            "%1: read as ';'-separated with decimal commas (a "
+                            "spreadsheet's European export)")
+                            .arg(name);
+        return csv;
+    }
+
+    std::size_t runOf(const CsvTable& csv, int column) {
         auto it = m_runIndex.find(csv.text(column));
         if (it == m_runIndex.end())
             csv.fail(
                 column,
                 QStringLiteral("unknown run id '%1' (not in campaign.json)").arg(csv.text(column)));
-        return m_campaign.runs[std::size_t(*it)];
+        return std::size_t(*it);
     }
 
-    void checkInTravel(const CsvTable& csv, int column, double position_mm) {
-        const auto& travel = m_campaign.travel_mm;
-        if (travel && (position_mm < travel->from_mm - kTravelToleranceMm ||
-                       position_mm > travel->to_mm + kTravelToleranceMm))
-            csv.fail(column, QStringLiteral("%1 = %2 mm lies outside the travel [%3, %4] mm "
+    /// The nut's centre can be anywhere on the screw; further than half a nut
+    /// past either end it would be off the screw: a unit mix-up (µm for mm).
+    void setPositionLimits() {
+        const auto& c = m_campaign;
+        if (c.screw) {
+            const double margin = c.nut_length_mm.value_or(0.0) / 2;
+            m_positionMin_mm = c.screw->fixed_end_mm - margin;
+            m_positionMax_mm = c.screw->fixed_end_mm + c.screw->length_mm + margin;
+        } else if (c.travel_mm) {
+            const double span = c.travel_mm->to_mm - c.travel_mm->from_mm;
+            m_positionMin_mm = c.travel_mm->from_mm - span;
+            m_positionMax_mm = c.travel_mm->to_mm + span;
+        }
+    }
+
+    void checkPosition(const CsvTable& csv, int column, double position_mm, Overrun& overrun) {
+        if (position_mm < m_positionMin_mm || position_mm > m_positionMax_mm)
+            csv.fail(column, QStringLiteral("%1 = %2 mm lies beyond the screw [%3, %4] mm "
                                             "(unit mix-up? positions are in mm)")
                                  .arg(csv.header()[std::size_t(column)])
                                  .arg(position_mm)
-                                 .arg(travel->from_mm)
-                                 .arg(travel->to_mm));
+                                 .arg(m_positionMin_mm)
+                                 .arg(m_positionMax_mm));
+        const auto& travel = m_campaign.travel_mm;
+        if (!travel) return;
+        const double outside = std::max(travel->from_mm - position_mm, position_mm - travel->to_mm);
+        if (outside <= 0) return;
+        if (overrun.count++ == 0) overrun.firstLine = csv.line();
+        overrun.furthest_mm = std::max(overrun.furthest_mm, outside);
+    }
+
+    void warnOverrun(const QString& file, const Overrun& overrun) {
+        if (overrun.count == 0) return;
+        warnings << QStringLiteral(
+                        "%1:%2: %3 position(s) outside the travel [%4, %5] mm, up to "
+                        "%6 mm past it (overrun to reverse; accepted)")
+                        .arg(file)
+                        .arg(overrun.firstLine)
+                        .arg(overrun.count)
+                        .arg(m_campaign.travel_mm->from_mm)
+                        .arg(m_campaign.travel_mm->to_mm)
+                        .arg(overrun.furthest_mm);
+    }
+
+    void check(const CsvTable& csv, int column, const std::optional<QString>& why) {
+        if (why)
+            csv.fail(column, QStringLiteral("column '%1': %2").arg(csv.header()[column], *why));
     }
 
     void reportProgress(const CsvTable& csv, double begin, double span) {
@@ -73,18 +129,22 @@ private:
     }
 
     void readSamples() {
-        CsvTable csv(m_dir.filePath(kSamplesFile), kSamplesFile);
+        const auto table = openCsv(kSamplesFile);
+        CsvTable& csv = *table;
         const int runCol = csv.requireColumn(QStringLiteral("run"));
         const int timeCol = csv.requireColumn(QStringLiteral("time_s"));
-        const std::vector<int>& dataCols = m_sampleHeaderColumns;
+        std::vector<int> dataCols;
+        std::vector<std::optional<Quantity>> quantities;  // nothing for axis columns
         for (std::size_t i = 0; i < csv.header().size(); ++i) {
             const QString& name = csv.header()[i];
             if (int(i) == runCol || int(i) == timeCol) continue;
-            if (!isAxisColumn(name) && !m_campaign.findChannel(name))
+            const Channel* channel = m_campaign.findChannel(name);
+            if (!isAxisColumn(name) && !channel)
                 throw BundleException({kSamplesFile, 1, int(i) + 1,
                                        QStringLiteral("column '%1' is not a channel declared in %2")
                                            .arg(name, kCampaignFile)});
-            m_sampleHeaderColumns.push_back(int(i));
+            dataCols.push_back(int(i));
+            quantities.push_back(channel ? std::optional(channel->quantity) : std::nullopt);
             m_campaign.sample_columns.push_back(name);
         }
         const int positionCol = csv.column(kPositionColumn);
@@ -92,52 +152,82 @@ private:
             run.samples.columns = m_campaign.sample_columns;
             run.samples.values.assign(dataCols.size(), {});
         }
+        SampleRowSink* sink = m_options.sampleSink;
+        if (sink) sink->begin(m_campaign);
 
-        for (std::size_t row = 0; csv.next(); ++row) {
-            Run& run = runOf(csv, runCol);
-            SampleSeries& s = run.samples;
-            double t = csv.number(timeCol);
-            if (!s.time_s.empty() && t <= s.time_s.back())
+        std::vector<double> lastTime(m_campaign.runs.size(),
+                                     -std::numeric_limits<double>::infinity());
+        std::vector<double> row(dataCols.size());
+        std::string lastRunId;  // rows come in long stretches of one run: skip the lookup
+        std::size_t runIndex = 0;
+        Overrun overrun;
+        int emptyRows = 0, firstEmptyRowLine = 0;
+        for (std::size_t n = 0; csv.next(); ++n) {
+            const std::string_view id = csv.field(runCol);
+            if (n == 0 || id != lastRunId) {
+                runIndex = runOf(csv, runCol);
+                lastRunId.assign(id);
+            }
+            const double t = csv.number(timeCol);
+            check(csv, timeCol, impossibleTime(t));
+            if (t <= lastTime[runIndex])
                 csv.fail(
                     timeCol,
                     QStringLiteral("time goes backwards or repeats in run '%1' (%2 s after %3 s)")
-                        .arg(run.id)
+                        .arg(m_campaign.runs[runIndex].id)
                         .arg(t)
-                        .arg(s.time_s.back()));
+                        .arg(lastTime[runIndex]));
             bool anyValue = false;
             for (std::size_t k = 0; k < dataCols.size(); ++k) {
-                double v = csv.numberOrMissing(dataCols[k]);
-                if (dataCols[k] == positionCol && !std::isnan(v))
-                    checkInTravel(csv, dataCols[k], v);
-                anyValue = anyValue || !std::isnan(v);
-                s.values[k].push_back(v);
+                const int column = dataCols[k];
+                const double v = row[k] = csv.numberOrMissing(column);
+                if (std::isnan(v)) continue;
+                anyValue = true;
+                if (quantities[k])
+                    check(csv, column, impossibleValue(*quantities[k], v));
+                else if (column == positionCol)
+                    checkPosition(csv, column, v, overrun);
+                else
+                    check(csv, column, impossibleAxisValue(csv.header()[column], v));
             }
             // A row without any value carries nothing to store; say so instead of keeping it.
             if (!anyValue) {
-                for (auto& column : s.values) column.pop_back();
-                if (++m_emptyRows == 1) m_firstEmptyRowLine = csv.line();
+                if (++emptyRows == 1) firstEmptyRowLine = csv.line();
                 continue;
             }
-            s.time_s.push_back(t);
-            if ((row & 0xFFFF) == 0) reportProgress(csv, 0.0, 0.8);
+            lastTime[runIndex] = t;
+            if (sink) {
+                sink->row(runIndex, t, row.data());
+            } else {
+                SampleSeries& s = m_campaign.runs[runIndex].samples;
+                s.time_s.push_back(t);
+                for (std::size_t k = 0; k < row.size(); ++k) s.values[k].push_back(row[k]);
+            }
+            if ((n & 0xFFFF) == 0) reportProgress(csv, 0.0, 0.8);
         }
-        if (m_emptyRows > 0)
+        if (emptyRows > 0)
             warnings << QStringLiteral("%1:%2: %3 row(s) without any value were skipped")
                             .arg(kSamplesFile)
-                            .arg(m_firstEmptyRowLine)
-                            .arg(m_emptyRows);
+                            .arg(firstEmptyRowLine)
+                            .arg(emptyRows);
+        warnOverrun(kSamplesFile, overrun);
     }
 
     void readMotion() {
-        CsvTable csv(m_dir.filePath(kMotionFile), kMotionFile);
+        const auto table = openCsv(kMotionFile);
+        CsvTable& csv = *table;
         const QStringList expected{QStringLiteral("run"),   QStringLiteral("start_s"),
                                    QStringLiteral("end_s"), QStringLiteral("from_mm"),
                                    QStringLiteral("to_mm"), QStringLiteral("feed_mm_min")};
         const std::vector<int> c = requireExactly(csv, expected);
+        Overrun overrun;
         while (csv.next()) {
-            Run& run = runOf(csv, c[0]);
+            Run& run = m_campaign.runs[runOf(csv, c[0])];
             MotionSegment m{csv.number(c[1]), csv.number(c[2]), csv.number(c[3]), csv.number(c[4]),
                             csv.number(c[5])};
+            check(csv, c[1], impossibleTime(m.start_s));
+            check(csv, c[2], impossibleTime(m.end_s));
+            check(csv, c[5], impossibleAxisValue(kFeedColumn, m.feed_mm_min));
             if (m.end_s < m.start_s)
                 csv.fail(c[2], QStringLiteral("segment ends (%1 s) before it starts (%2 s)")
                                    .arg(m.end_s)
@@ -149,23 +239,27 @@ private:
                              .arg(run.id)
                              .arg(m.start_s)
                              .arg(run.motion.back().end_s));
-            checkInTravel(csv, c[3], m.from_mm);
-            checkInTravel(csv, c[4], m.to_mm);
+            checkPosition(csv, c[3], m.from_mm, overrun);
+            checkPosition(csv, c[4], m.to_mm, overrun);
             run.motion.push_back(m);
         }
+        warnOverrun(kMotionFile, overrun);
         reportProgress(csv, 0.8, 0.1);
     }
 
     void readPositioning() {
-        CsvTable csv(m_dir.filePath(kPositioningFile), kPositioningFile);
+        const auto table = openCsv(kPositioningFile);
+        CsvTable& csv = *table;
         const QStringList expected{QStringLiteral("run"),       QStringLiteral("time_s"),
                                    QStringLiteral("cycle"),     QStringLiteral("target_mm"),
                                    QStringLiteral("direction"), QStringLiteral("deviation_um")};
         const std::vector<int> c = requireExactly(csv, expected);
+        Overrun overrun;
         while (csv.next()) {
-            Run& run = runOf(csv, c[0]);
+            Run& run = m_campaign.runs[runOf(csv, c[0])];
             PositioningMeasurement p;
             p.time_s = csv.number(c[1]);
+            check(csv, c[1], impossibleTime(p.time_s));
             if (!run.positioning.empty() && p.time_s < run.positioning.back().time_s)
                 csv.fail(c[1], QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
                                    .arg(run.id)
@@ -174,7 +268,7 @@ private:
             p.cycle = csv.integer(c[2]);
             if (p.cycle < 0) csv.fail(c[2], QStringLiteral("cycle must not be negative"));
             p.target_mm = csv.number(c[3]);
-            checkInTravel(csv, c[3], p.target_mm);
+            checkPosition(csv, c[3], p.target_mm, overrun);
             QString direction = csv.text(c[4]);
             if (direction == QLatin1String("+"))
                 p.direction = Direction::Positive;
@@ -184,8 +278,10 @@ private:
                 csv.fail(c[4],
                          QStringLiteral("direction must be + or -, found '%1'").arg(direction));
             p.deviation_um = csv.number(c[5]);
+            check(csv, c[5], impossibleDeviation(p.deviation_um));
             run.positioning.push_back(p);
         }
+        warnOverrun(kPositioningFile, overrun);
         reportProgress(csv, 0.9, 0.1);
     }
 
@@ -201,47 +297,19 @@ private:
         return indices;
     }
 
-    /// Temperatures logged in kelvin instead of °C are the classic mix-up: the
-    /// median of a channel above 200 cannot be a °C reading on a machine tool.
-    void checkTemperatureUnits() {
-        for (std::size_t k = 0; k < m_campaign.sample_columns.size(); ++k) {
-            const Channel* ch = m_campaign.findChannel(m_campaign.sample_columns[k]);
-            if (!ch || ch->quantity != Quantity::Temperature) continue;
-            std::vector<double> present;
-            for (const Run& run : m_campaign.runs)
-                for (double v : run.samples.values[k])
-                    if (!std::isnan(v)) present.push_back(v);
-            if (present.empty()) continue;
-            auto mid = present.begin() + std::ptrdiff_t(present.size() / 2);
-            std::nth_element(present.begin(), mid, present.end());
-            if (*mid > 200.0)
-                throw BundleException(
-                    {kSamplesFile, 1, m_sampleHeaderColumns[k] + 1,
-                     QStringLiteral("temperature channel '%1' reads %2 in the median: "
-                                    "that looks like kelvin, DriftLab expects °C")
-                         .arg(ch->id)
-                         .arg(*mid)});
-        }
-    }
-
-    QDir m_dir;
+    const BundleSource& m_source;
     const BundleReadOptions& m_options;
     Campaign m_campaign;
     QHash<QString, int> m_runIndex;
-    std::vector<int> m_sampleHeaderColumns;  ///< samples.csv column of each sample_columns entry
-    int m_emptyRows = 0;
-    int m_firstEmptyRowLine = 0;
+    double m_positionMin_mm = -std::numeric_limits<double>::infinity();
+    double m_positionMax_mm = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace
 
-BundleReadResult readBundle(const QString& directory, const BundleReadOptions& options) {
+BundleReadResult readBundle(const BundleSource& source, const BundleReadOptions& options) {
     BundleReadResult result;
-    if (!QFileInfo(directory).isDir()) {
-        result.error = BundleError{directory, 0, 0, QStringLiteral("not a bundle folder")};
-        return result;
-    }
-    BundleParser parser(directory, options);
+    BundleParser parser(source, options);
     try {
         result.campaign = parser.parse();
         result.warnings = parser.warnings;
@@ -249,6 +317,17 @@ BundleReadResult readBundle(const QString& directory, const BundleReadOptions& o
         result.error = e.error;
     }
     return result;
+}
+
+BundleReadResult readBundle(const QString& directory, const BundleReadOptions& options) {
+    QString error;
+    auto source = openBundleFolder(directory, &error);
+    if (!source) {
+        BundleReadResult result;
+        result.error = BundleError{directory, 0, 0, error};
+        return result;
+    }
+    return readBundle(*source, options);
 }
 
 }  // namespace driftlab

@@ -3,6 +3,7 @@
 #include <QDir>
 #include <QJsonDocument>
 #include <QSaveFile>
+#include <QTemporaryDir>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -11,6 +12,9 @@
 
 namespace driftlab {
 namespace {
+
+const QStringList kBundleFiles{QStringLiteral("campaign.json"), QStringLiteral("samples.csv"),
+                               QStringLiteral("motion.csv"), QStringLiteral("positioning.csv")};
 
 void appendNumber(QByteArray& out, double value) {
     if (std::isnan(value)) return;  // missing sample: empty cell
@@ -78,24 +82,77 @@ QByteArray positioningCsv(const Campaign& c) {
 
 }  // namespace
 
-std::optional<BundleError> writeBundle(const Campaign& campaign, const QString& directory) {
-    QDir dir(directory);
-    if (!dir.mkpath(QStringLiteral(".")))
-        return BundleError{directory, 0, 0, QStringLiteral("cannot create the bundle folder")};
+std::optional<BundleError> writeBundle(const Campaign& campaign, const QString& directory,
+                                       ExistingBundle existing) {
+    const QFileInfo target(directory);
+    const QString targetPath = target.absoluteFilePath();
+    auto fail = [&](const QString& why) { return BundleError{directory, 0, 0, why}; };
+    const QStringList present =
+        target.isDir()
+            ? QDir(targetPath)
+                  .entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden | QDir::System)
+            : QStringList();
+    if (target.exists() && !target.isDir())
+        return fail(QStringLiteral("exists and is not a folder"));
+    if (!present.isEmpty()) {
+        if (existing == ExistingBundle::Refuse)
+            return fail(QStringLiteral("is not empty (%1); a bundle is written only into a new or "
+                                       "empty folder (--force replaces a previous bundle whole)")
+                            .arg(present.join(QStringLiteral(", "))));
+        QStringList foreign;
+        for (const QString& name : present)
+            if (!kBundleFiles.contains(name)) foreign << name;
+        if (!foreign.isEmpty())
+            return fail(QStringLiteral("holds files that are not a bundle's (%1): not replaced")
+                            .arg(foreign.join(QStringLiteral(", "))));
+    }
+    if (!QDir().mkpath(target.absolutePath()))
+        return fail(QStringLiteral("cannot create the parent folder"));
 
+    // Written beside the target, on the same file system, so that the final
+    // rename is atomic; the staging folder vanishes on any failure.
+    QTemporaryDir staging(targetPath + QStringLiteral(".partial-XXXXXX"));
+    if (!staging.isValid())
+        return fail(QStringLiteral("cannot create a staging folder: ") + staging.errorString());
+    const QDir dir(staging.path());
     const bool hasMotion = std::any_of(campaign.runs.begin(), campaign.runs.end(),
                                        [](const Run& r) { return !r.motion.empty(); });
     const bool hasPositioning = std::any_of(campaign.runs.begin(), campaign.runs.end(),
                                             [](const Run& r) { return !r.positioning.empty(); });
+    auto prefixed = [&](BundleError e) {
+        e.file = QDir(directory).filePath(e.file);
+        return e;
+    };
     if (auto e = save(dir, QStringLiteral("campaign.json"),
                       QJsonDocument(campaignToJson(campaign)).toJson(QJsonDocument::Indented)))
-        return e;
-    if (auto e = save(dir, QStringLiteral("samples.csv"), samplesCsv(campaign))) return e;
+        return prefixed(*e);
+    if (auto e = save(dir, QStringLiteral("samples.csv"), samplesCsv(campaign)))
+        return prefixed(*e);
     if (hasMotion)
-        if (auto e = save(dir, QStringLiteral("motion.csv"), motionCsv(campaign))) return e;
+        if (auto e = save(dir, QStringLiteral("motion.csv"), motionCsv(campaign)))
+            return prefixed(*e);
     if (hasPositioning)
         if (auto e = save(dir, QStringLiteral("positioning.csv"), positioningCsv(campaign)))
-            return e;
+            return prefixed(*e);
+
+    // An empty target folder is removed so the staged one can take its name; a
+    // previous bundle is moved aside first and deleted only once the new one is in place.
+    QString previous;
+    if (target.isDir()) {
+        if (present.isEmpty()) {
+            QDir().rmdir(targetPath);
+        } else {
+            previous = staging.path() + QStringLiteral(".previous");
+            if (!QDir().rename(targetPath, previous))
+                return fail(QStringLiteral("cannot move the previous bundle aside"));
+        }
+    }
+    if (!QDir().rename(staging.path(), targetPath)) {
+        if (!previous.isEmpty()) QDir().rename(previous, targetPath);
+        return fail(QStringLiteral("cannot move the new bundle into place"));
+    }
+    staging.setAutoRemove(false);
+    if (!previous.isEmpty()) QDir(previous).removeRecursively();
     return std::nullopt;
 }
 

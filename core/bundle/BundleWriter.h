@@ -9,9 +9,18 @@
 
 namespace driftlab {
 
+/// What to do when the target folder already holds files.
+enum class ExistingBundle {
+    Refuse,   ///< only a new or empty folder is written
+    Replace,  ///< a folder holding only a bundle's files is replaced as a whole
+};
+
 /// Writes campaign.json, samples.csv and, where the campaign has such data,
-/// motion.csv and positioning.csv into `directory` (created if needed). Numbers
-/// are written in their shortest exact form, so reading gives the same doubles.
-std::optional<BundleError> writeBundle(const Campaign& campaign, const QString& directory);
+/// motion.csv and positioning.csv into `directory`. Numbers are written in
+/// their shortest exact form, so reading gives the same doubles. The bundle is
+/// written beside the target and renamed into place, so the folder holds a
+/// complete bundle or is left as it was, never a mix of two campaigns.
+std::optional<BundleError> writeBundle(const Campaign& campaign, const QString& directory,
+                                       ExistingBundle existing = ExistingBundle::Refuse);
 
 }  // namespace driftlab

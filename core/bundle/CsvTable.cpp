@@ -1,6 +1,7 @@
 #include "core/bundle/CsvTable.h"
 
-#include <QFile>
+#include <csv.h>
+#include <QIODevice>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -9,11 +10,13 @@
 namespace driftlab {
 namespace {
 
-std::string_view trimmed(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-        s.remove_suffix(1);
-    return s;
+constexpr qint64 kChunkBytes = 1 << 20;
+
+extern "C" void onField(void* data, std::size_t size, void* table) {
+    static_cast<CsvTable*>(table)->appendField(static_cast<const char*>(data), size);
+}
+extern "C" void onRecordEnd(int, void* table) {
+    static_cast<CsvTable*>(table)->endRecord();
 }
 
 QString quoted(std::string_view s) {
@@ -22,32 +25,30 @@ QString quoted(std::string_view s) {
 
 }  // namespace
 
-CsvTable::CsvTable(const QString& path, const QString& displayName) : m_fileName(displayName) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
+CsvTable::CsvTable(std::unique_ptr<QIODevice> device, const QString& displayName)
+    : m_fileName(displayName), m_device(std::move(device)), m_parser(new csv_parser) {
+    // Strict: a quote inside an unquoted field or an unclosed quote is an error,
+    // not a silently merged cell.
+    if (csv_init(m_parser.get(), CSV_STRICT | CSV_STRICT_FINI) != 0)
+        throw BundleException({m_fileName, 0, 0, QStringLiteral("cannot start the CSV parser")});
+    if (!readRecord())
         throw BundleException(
-            {m_fileName, 0, 0, QStringLiteral("cannot open: ") + file.errorString()});
-    m_data = file.readAll();
-    if (m_data.startsWith("\xEF\xBB\xBF")) m_pos = 3;  // UTF-8 byte-order mark
-
-    std::string_view line;
-    while (readLine(line)) {
-        if (trimmed(line).empty()) continue;
-        split(line);
-        for (std::size_t i = 0; i < m_fields.size(); ++i) {
-            QString name = QString::fromUtf8(m_fields[i].data(), qsizetype(m_fields[i].size()));
-            if (name.isEmpty()) fail(int(i), QStringLiteral("empty column name in header"));
-            for (std::size_t j = 0; j < i; ++j)
-                if (m_header[j] == name)
-                    fail(int(i), QStringLiteral("duplicate column '%1' in header (also column %2)")
-                                     .arg(name)
-                                     .arg(j + 1));
-            m_header.push_back(name);
-        }
-        return;
+            {m_fileName, 0, 0, QStringLiteral("missing header line (file is empty)")});
+    for (std::size_t i = 0; i < m_ends.size(); ++i) {
+        std::string_view cell = field(int(i));
+        QString name = QString::fromUtf8(cell.data(), qsizetype(cell.size()));
+        if (name.isEmpty()) fail(int(i), QStringLiteral("empty column name in header"));
+        for (std::size_t j = 0; j < i; ++j)
+            if (m_header[j] == name)
+                fail(int(i), QStringLiteral("duplicate column '%1' in header (also column %2)")
+                                 .arg(name)
+                                 .arg(j + 1));
+        m_header.push_back(name);
     }
-    throw BundleException(
-        {m_fileName, 0, 0, QStringLiteral("missing header line (file is empty)")});
+}
+
+CsvTable::~CsvTable() {
+    csv_free(m_parser.get());
 }
 
 int CsvTable::column(const QString& name) const {
@@ -64,65 +65,133 @@ int CsvTable::requireColumn(const QString& name) const {
     return c;
 }
 
-bool CsvTable::readLine(std::string_view& line) {
-    if (m_pos >= m_data.size()) return false;
-    const char* begin = m_data.constData() + m_pos;
-    const char* end =
-        static_cast<const char*>(std::memchr(begin, '\n', std::size_t(m_data.size() - m_pos)));
-    qsizetype length = end ? end - begin : m_data.size() - m_pos;
-    line = std::string_view(begin, std::size_t(length));
-    m_pos += length + (end ? 1 : 0);
-    ++m_line;
-    return true;
+std::string_view CsvTable::field(int column) const {
+    const std::size_t begin = column == 0 ? 0 : m_ends[std::size_t(column) - 1];
+    return std::string_view(m_text).substr(begin, m_ends[std::size_t(column)] - begin);
 }
 
-void CsvTable::split(std::string_view line) {
-    m_fields.clear();
-    std::size_t start = 0;
-    for (;;) {
-        std::size_t comma = line.find(',', start);
-        std::string_view cell = trimmed(line.substr(start, comma - start));
-        if (cell.find('"') != std::string_view::npos)
-            fail(int(m_fields.size()), QStringLiteral("quoted fields are not supported"));
-        m_fields.push_back(cell);
-        if (comma == std::string_view::npos) break;
-        start = comma + 1;
+double CsvTable::progress() const {
+    const qint64 size = m_device->size();
+    return size > 0 ? std::min(1.0, double(m_consumed) / double(size)) : 0.0;
+}
+
+void CsvTable::appendField(const char* data, std::size_t size) {
+    m_buildText.append(data, size);
+    m_buildEnds.push_back(m_buildText.size());
+}
+
+void CsvTable::endRecord() {
+    m_text.swap(m_buildText);
+    m_ends.swap(m_buildEnds);
+    m_buildText.clear();
+    m_buildEnds.clear();
+    m_recordReady = true;
+    m_recordLine = m_physicalLine;
+}
+
+void CsvTable::detectDelimiter(std::string_view firstLine) {
+    // A spreadsheet set to a European locale writes "run;time_s;T_nut" and
+    // "20,06": a header with ';' and no ',' can only be that.
+    if (firstLine.find(';') != std::string_view::npos &&
+        firstLine.find(',') == std::string_view::npos) {
+        m_delimiter = ';';
+        csv_set_delim(m_parser.get(), ';');
     }
 }
 
+bool CsvTable::feedLine() {
+    std::size_t newline = m_chunk.find('\n', m_chunkPos);
+    while (newline == std::string::npos && !m_atEnd) {
+        m_chunk.erase(0, m_chunkPos);
+        m_chunkPos = 0;
+        const std::size_t old = m_chunk.size();
+        m_chunk.resize(old + std::size_t(kChunkBytes));
+        const qint64 got = m_device->read(m_chunk.data() + old, kChunkBytes);
+        if (got < 0)
+            throw BundleException({m_fileName, m_physicalLine + 1, 0,
+                                   QStringLiteral("read error: ") + m_device->errorString()});
+        m_chunk.resize(old + std::size_t(got));
+        if (got == 0) m_atEnd = true;
+        if (m_physicalLine == 0 && old == 0 && m_chunk.compare(0, 3, "\xEF\xBB\xBF") == 0)
+            m_chunkPos = 3;  // UTF-8 byte-order mark, as spreadsheets write it
+        newline = m_chunk.find('\n', std::max(old, m_chunkPos));
+    }
+    if (m_chunkPos >= m_chunk.size()) return false;
+    const std::size_t end = newline == std::string::npos ? m_chunk.size() : newline + 1;
+    const std::string_view line(m_chunk.data() + m_chunkPos, end - m_chunkPos);
+    if (m_physicalLine == 0) detectDelimiter(line);
+    ++m_physicalLine;
+    if (csv_parse(m_parser.get(), line.data(), line.size(), onField, onRecordEnd, this) !=
+        line.size())
+        throw BundleException(
+            {m_fileName, m_physicalLine, int(m_buildEnds.size()) + 1,
+             QStringLiteral("malformed quoting: a '\"' inside an unquoted field or text after a "
+                            "closing quote (RFC 4180 doubles a quote inside a quoted field)")});
+    m_chunkPos = end;
+    m_consumed += qint64(line.size());
+    return true;
+}
+
+bool CsvTable::readRecord() {
+    m_recordReady = false;
+    while (!m_recordReady) {
+        if (feedLine()) continue;
+        if (csv_fini(m_parser.get(), onField, onRecordEnd, this) != 0)
+            throw BundleException(
+                {m_fileName, m_physicalLine, int(m_buildEnds.size()) + 1,
+                 QStringLiteral("unterminated quoted field: a '\"' is opened and never closed")});
+        return m_recordReady;
+    }
+    return true;
+}
+
 bool CsvTable::next() {
-    std::string_view line;
-    while (readLine(line)) {
-        if (trimmed(line).empty()) continue;
-        split(line);
-        if (m_fields.size() != m_header.size())
-            fail(int(std::min(m_fields.size(), m_header.size())),
+    while (readRecord()) {
+        if (m_ends.size() == 1 && m_ends[0] == 0) continue;  // a line of spaces
+        if (m_ends.size() != m_header.size())
+            fail(int(std::min(m_ends.size(), m_header.size())),
                  QStringLiteral("expected %1 fields as in the header, found %2%3")
                      .arg(m_header.size())
-                     .arg(m_fields.size())
-                     .arg(m_fields.size() < m_header.size() ? QStringLiteral(" (truncated line?)")
-                                                            : QString()));
+                     .arg(m_ends.size())
+                     .arg(m_ends.size() < m_header.size() ? QStringLiteral(" (truncated line?)")
+                                                          : QString()));
         return true;
     }
     return false;
 }
 
 double CsvTable::number(int column) const {
-    std::string_view cell = field(column);
-    if (cell.empty())
+    if (field(column).empty())
         fail(column, QStringLiteral("empty cell in column '%1'").arg(m_header[column]));
     return numberOrMissing(column);
 }
 
 double CsvTable::numberOrMissing(int column) const {
-    std::string_view cell = field(column);
+    const std::string_view cell = field(column);
     if (cell.empty()) return std::numeric_limits<double>::quiet_NaN();
     std::string_view digits = cell.front() == '+' ? cell.substr(1) : cell;
+    char buffer[64];
+    if (europeanFormat() && digits.find(',') != std::string_view::npos) {
+        if (digits.find('.') != std::string_view::npos || digits.size() >= sizeof buffer)
+            fail(column, QStringLiteral("cell %1 in column '%2' mixes '.' and ',': thousands "
+                                        "separators are not read; export numbers without them")
+                             .arg(quoted(cell), m_header[column]));
+        std::memcpy(buffer, digits.data(), digits.size());
+        std::replace(buffer, buffer + digits.size(), ',', '.');
+        digits = std::string_view(buffer, digits.size());
+    }
     double value = 0;
     auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (ec != std::errc() || ptr != digits.data() + digits.size())
-        fail(column, QStringLiteral("non-numeric cell %1 in column '%2'")
+    if (ec == std::errc::result_out_of_range)
+        fail(column, QStringLiteral("value %1 in column '%2' is out of the range of a number")
                          .arg(quoted(cell), m_header[column]));
+    if (ec != std::errc() || ptr != digits.data() + digits.size())
+        fail(column,
+             QStringLiteral("non-numeric cell %1 in column '%2'%3")
+                 .arg(quoted(cell), m_header[column],
+                      !europeanFormat() && cell.find(',') != std::string_view::npos
+                          ? QStringLiteral(" (a decimal comma? use '.' in a ','-separated file)")
+                          : QString()));
     if (!std::isfinite(value))
         fail(column, QStringLiteral("NaN or infinite value %1 in column '%2'")
                          .arg(quoted(cell), m_header[column]));
@@ -145,7 +214,7 @@ QString CsvTable::text(int column) const {
 }
 
 void CsvTable::fail(int column, const QString& message) const {
-    throw BundleException({m_fileName, m_line, column + 1, message});
+    throw BundleException({m_fileName, m_recordLine, column + 1, message});
 }
 
 }  // namespace driftlab

@@ -1,22 +1,32 @@
 #pragma once
-// Minimal, fast reader for the bundle's CSV files: comma separated, one header
-// line, no quoting (ids are [A-Za-z0-9_]+ and everything else is a number).
-// Fields are views into the file buffer so a million-sample file is parsed
-// without per-cell allocation. Every error names file, line and column.
+// Streaming reader for the bundle's CSV files on libcsv (RFC 4180: quoted
+// fields, doubled quotes, embedded delimiters and line breaks, CRLF). A UTF-8
+// byte-order mark is skipped. The file is read in chunks, so memory does not
+// grow with the file. A ';'-separated file (the European spreadsheet export) is
+// read too, with decimal commas in its numbers, and the caller is told so.
+// Every error names file, line and column.
 
-#include <QByteArray>
 #include <QString>
+#include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "core/bundle/BundleError.h"
 
+class QIODevice;
+struct csv_parser;
+
 namespace driftlab {
 
 class CsvTable {
 public:
-    /// Reads the whole file; throws BundleException if it cannot be read or has no header.
-    CsvTable(const QString& path, const QString& displayName);
+    /// Reads the header from `device` (opened for reading; the table takes it
+    /// over); throws BundleException if it cannot be read or has no header.
+    CsvTable(std::unique_ptr<QIODevice> device, const QString& displayName);
+    ~CsvTable();
+    CsvTable(const CsvTable&) = delete;
+    CsvTable& operator=(const CsvTable&) = delete;
 
     const QString& fileName() const { return m_fileName; }
     const std::vector<QString>& header() const { return m_header; }
@@ -24,14 +34,17 @@ public:
     int column(const QString& name) const;
     /// Index of a header column; throws naming the file if absent.
     int requireColumn(const QString& name) const;
+    /// True when the file is ';'-separated with decimal commas.
+    bool europeanFormat() const { return m_delimiter == ';'; }
 
     /// Advances to the next non-blank record. Throws if its field count differs
-    /// from the header's (e.g. a truncated last line).
+    /// from the header's (e.g. a truncated last line) or its quoting is broken.
     bool next();
-    int line() const { return m_line; }
-    std::string_view field(int column) const { return m_fields[std::size_t(column)]; }
+    /// Line of the current record's end (1-based, counting the header).
+    int line() const { return m_recordLine; }
+    std::string_view field(int column) const;
     /// Fraction of the file consumed, for progress reporting.
-    double progress() const { return m_data.isEmpty() ? 1.0 : double(m_pos) / m_data.size(); }
+    double progress() const;
 
     /// A finite number, or throws "non-numeric cell" / "NaN or infinite value".
     double number(int column) const;
@@ -42,16 +55,34 @@ public:
 
     [[noreturn]] void fail(int column, const QString& message) const;
 
+    /// libcsv's callbacks (C linkage needs plain functions; not for callers).
+    void appendField(const char* data, std::size_t size);
+    void endRecord();
+
 private:
-    bool readLine(std::string_view& line);
-    void split(std::string_view line);
+    /// Feeds the parser until a record is complete; false at the end of the file.
+    bool readRecord();
+    bool feedLine();
+    void detectDelimiter(std::string_view firstLine);
 
     QString m_fileName;
-    QByteArray m_data;
-    qsizetype m_pos = 0;
-    int m_line = 0;
+    std::unique_ptr<QIODevice> m_device;
+    std::unique_ptr<csv_parser> m_parser;
+    char m_delimiter = ',';
+
+    std::string m_chunk;  ///< bytes read but not yet fed
+    std::size_t m_chunkPos = 0;
+    qint64 m_consumed = 0;  ///< bytes fed so far
+    bool m_atEnd = false;
+    int m_physicalLine = 0;  ///< lines fed so far
+
+    // The record being assembled and the one handed out (fields as offsets into one buffer).
+    std::string m_buildText, m_text;
+    std::vector<std::size_t> m_buildEnds, m_ends;
+    bool m_recordReady = false;
+    int m_recordLine = 0;
+
     std::vector<QString> m_header;
-    std::vector<std::string_view> m_fields;
 };
 
 }  // namespace driftlab

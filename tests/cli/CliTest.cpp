@@ -41,9 +41,15 @@ TEST(Cli, importPrintsTheIdAndExportWritesTheSameCampaignBack) {
         runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), dbPath});
     ASSERT_EQ(first.exitCode, 0) << first.err.constData();
     EXPECT_EQ(first.out.trimmed(), QByteArray("1"));
-    CliResult second =
+    // The same bundle again is noticed by its content; --again stores it once more.
+    CliResult twice =
         runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), dbPath});
-    EXPECT_EQ(second.out.trimmed(), QByteArray("2"));
+    EXPECT_EQ(twice.exitCode, 1);
+    EXPECT_TRUE(reason(twice.err).contains("is already in " + dbPath.toUtf8() + " as campaign 1"))
+        << twice.err.constData();
+    CliResult second = runCli({QStringLiteral("import"), exampleBundlePath(),
+                               QStringLiteral("--db"), dbPath, QStringLiteral("--again")});
+    EXPECT_EQ(second.out.trimmed(), QByteArray("2")) << second.err.constData();
 
     const QString out = dir.filePath(QStringLiteral("exported"));
     CliResult exported =

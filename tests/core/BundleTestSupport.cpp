@@ -189,12 +189,79 @@ const std::vector<BadBundleCase>& badBundleCases() {
              }
              writeFile(file(d, "samples.csv"), lines.join('\n'));
          },
-         "samples.csv:1:3", "looks like kelvin"},
+         "samples.csv:2:3", "looks like kelvin"},
+        // Issue 9: the kelvin check works per value, not on the median.
+        {"one_kelvin_reading_among_celsius",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,980,22.74,", "\nS1,980,295.89,");
+         },
+         "samples.csv:100:3", "295.89 °C looks like kelvin"},
+        {"temperature_of_2000_celsius",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,10,20.06,", "\nS1,10,2000,");
+         },
+         "samples.csv:3:3", "column 'T_nut': 2000 °C is impossible for a temperature"},
+        {"temperature_of_1e308",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,10,20.06,20.02,", "\nS1,10,20.06,1e308,");
+         },
+         "samples.csv:3:4", "column 'T_bearing_fixed': 1e+308 °C is impossible"},
+        {"number_beyond_double_range",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,10,20.06,", "\nS1,10,1e400,");
+         },
+         "samples.csv:3:3", "out of the range of a number"},
         {"targets_in_micrometres",
          [=](const QString& d) {
              replaceInFile(file(d, "positioning.csv"), ",70,+,", ",70000,+,");
          },
-         "positioning.csv:3:4", "outside the travel [0, 700] mm (unit mix-up?"},
+         "positioning.csv:3:4", "lies beyond the screw [-80, 900] mm (unit mix-up?"},
+        {"position_column_in_micrometres",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), ",423.333,8000,", ",423333,8000,");
+         },
+         "samples.csv:3:16", "position_mm = 423333 mm lies beyond the screw"},
+        {"deviation_in_nanometres",
+         [=](const QString& d) {
+             replaceInFile(file(d, "positioning.csv"), "\nS1,2,0,70,+,0.93\n",
+                           "\nS1,2,0,70,+,930000\n");
+         },
+         "positioning.csv:3:6", "nm instead of µm?"},
+        {"time_in_milliseconds",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,10,", "\nS1,36000000,");
+         },
+         "samples.csv:3:2", "ms instead of s?"},
+        {"feed_in_micrometres_per_minute",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), ",423.333,8000,", ",423.333,8000000,");
+         },
+         "samples.csv:3:17", "column 'feed_mm_min': 8000000 mm/min is beyond ±1000000 mm/min"},
+        // Issue 9: RFC 4180 is read, so what breaks it must be named.
+        {"stray_quote_inside_a_cell",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,10,20.06,", "\nS1,10,20\"06,");
+         },
+         "samples.csv:3:3", "malformed quoting"},
+        {"unterminated_quote",
+         [=](const QString& d) {
+             QByteArray csv = readFile(file(d, "samples.csv"));
+             writeFile(file(d, "samples.csv"), csv + "S1,3700,\"20.5,20,20,20,20,20\n");
+         },
+         "samples.csv:544:3", "unterminated quoted field"},
+        {"decimal_comma_in_a_comma_separated_file",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,10,20.06,", "\nS1,10,\"20,06\",");
+         },
+         "samples.csv:3:3", "non-numeric cell '20,06' in column 'T_nut' (a decimal comma?"},
+        {"thousands_separator_in_a_semicolon_file",
+         [=](const QString& d) {
+             QByteArray csv = readFile(file(d, "samples.csv"));
+             csv.replace(',', ';');
+             csv.replace("\nS1;10;20.06;", "\nS1;10;1.020,06;");
+             writeFile(file(d, "samples.csv"), csv);
+         },
+         "samples.csv:3:3", "mixes '.' and ','"},
         {"motion_ends_before_start",
          [=](const QString& d) {
              replaceInFile(file(d, "motion.csv"), "S1,0.000,2.100,", "S1,0.000,-2.100,");

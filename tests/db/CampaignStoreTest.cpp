@@ -121,7 +121,7 @@ TEST(CampaignStore, cancelledImportStoresNothing) {
     EXPECT_TRUE(error.contains(QStringLiteral("import cancelled"))) << qPrintable(error);
     EXPECT_TRUE(store->listCampaigns().empty());
     QSqlQuery q(store->database());
-    ASSERT_TRUE(q.exec(QStringLiteral("SELECT count(*) FROM sample")) && q.next());
+    ASSERT_TRUE(q.exec(QStringLiteral("SELECT count(*) FROM sample_block")) && q.next());
     EXPECT_EQ(q.value(0).toInt(), 0);
 }
 

@@ -1,0 +1,89 @@
+#include "core/bundle/ValueLimits.h"
+
+#include <cmath>
+
+namespace driftlab {
+namespace {
+
+constexpr double kMinTemperatureC = -60.0;
+constexpr double kMaxTemperatureC = 300.0;
+constexpr double kKelvinSuspectC = 200.0;
+constexpr double kMaxDisplacementUm = 10'000.0;
+constexpr double kMaxSpeedRpm = 200'000.0;
+constexpr double kMaxFeedMmMin = 1'000'000.0;
+constexpr double kMaxTorqueNm = 100'000.0;
+constexpr double kMaxTimeS = 1e7;
+
+QString number(double value) {
+    return QString::number(value, 'g', 10);
+}
+
+}  // namespace
+
+std::optional<QString> impossibleValue(Quantity quantity, double value) {
+    switch (quantity) {
+        case Quantity::Temperature:
+            if (value < kMinTemperatureC || value > kMaxTemperatureC)
+                return QStringLiteral(
+                           "%1 °C is impossible for a temperature on a machine tool "
+                           "(%2…%3 °C)%4")
+                    .arg(number(value))
+                    .arg(number(kMinTemperatureC))
+                    .arg(number(kMaxTemperatureC))
+                    .arg(value > 250 && value < 400
+                             ? QStringLiteral("; kelvin? DriftLab expects °C")
+                             : QString());
+            if (value > kKelvinSuspectC)
+                return QStringLiteral(
+                           "%1 °C looks like kelvin (no part of a feed axis runs that hot); "
+                           "DriftLab expects °C")
+                    .arg(number(value));
+            return std::nullopt;
+        case Quantity::Displacement:
+            if (std::abs(value) > kMaxDisplacementUm)
+                return QStringLiteral(
+                           "%1 µm is beyond ±%2 µm for a drift probe (nm instead of µm?)")
+                    .arg(number(value))
+                    .arg(number(kMaxDisplacementUm));
+            return std::nullopt;
+        case Quantity::Speed:
+            if (std::abs(value) > kMaxSpeedRpm)
+                return QStringLiteral("%1 rpm is beyond ±%2 rpm for a spindle speed")
+                    .arg(number(value))
+                    .arg(number(kMaxSpeedRpm));
+            return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+std::optional<QString> impossibleAxisValue(const QString& column, double value) {
+    if (column == kFeedColumn && std::abs(value) > kMaxFeedMmMin)
+        return QStringLiteral("%1 mm/min is beyond ±%2 mm/min for a feed (mm/s or µm/min?)")
+            .arg(number(value))
+            .arg(number(kMaxFeedMmMin));
+    if (column == kTorqueColumn && std::abs(value) > kMaxTorqueNm)
+        return QStringLiteral("%1 N·m is beyond ±%2 N·m for a feed drive's torque")
+            .arg(number(value))
+            .arg(number(kMaxTorqueNm));
+    return std::nullopt;
+}
+
+std::optional<QString> impossibleDeviation(double deviation_um) {
+    if (std::abs(deviation_um) > kMaxDisplacementUm)
+        return QStringLiteral(
+                   "%1 µm is beyond ±%2 µm for a positioning deviation (nm instead "
+                   "of µm?)")
+            .arg(number(deviation_um))
+            .arg(number(kMaxDisplacementUm));
+    return std::nullopt;
+}
+
+std::optional<QString> impossibleTime(double time_s) {
+    if (std::abs(time_s) > kMaxTimeS)
+        return QStringLiteral("%1 s is beyond %2 s since the run's start (ms instead of s?)")
+            .arg(number(time_s))
+            .arg(number(kMaxTimeS));
+    return std::nullopt;
+}
+
+}  // namespace driftlab
