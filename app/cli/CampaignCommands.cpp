@@ -12,10 +12,11 @@ const QCommandLineOption kDbOption{QStringLiteral("db"),
                                    QStringLiteral("Campaign database (SQLite file)."),
                                    QStringLiteral("FILE")};
 
+/// The --db store to import into; a missing one is created, visible only once published.
 std::unique_ptr<db::CampaignStore> openStore(const QCommandLineParser& parser) {
-    if (!parser.isSet(kDbOption)) throw CliError(QStringLiteral("--db FILE is required"), 2);
     QString error;
-    auto store = db::CampaignStore::open(parser.value(kDbOption), &error);
+    auto store =
+        db::CampaignStore::open(parser.value(kDbOption), db::StoreAccess::CreateIfMissing, &error);
     if (!store) throw CliError(error);
     return store;
 }
@@ -27,13 +28,14 @@ int importCommand(const QStringList& args) {
     parseArguments(parser, args, {kDbOption}, QStringLiteral("BUNDLE"));
     if (parser.positionalArguments().size() != 1)
         throw CliError(QStringLiteral("give one BUNDLE folder"), 2);
-    auto store = openStore(parser);
+    if (!parser.isSet(kDbOption)) throw CliError(QStringLiteral("--db FILE is required"), 2);
     // Read (and validate) the whole bundle before touching the database.
     const Campaign campaign = readBundleOrFail(parser.positionalArguments().front());
+    auto store = openStore(parser);
     QString error;
     auto id = store->importCampaign(
         campaign, &error, [](double f) { return printProgress(QStringLiteral("importing"), f); });
-    if (!id) throw CliError(error);
+    if (!id || !store->publish(&error)) throw CliError(error);
     if (parser.isSet(QStringLiteral("json")))
         printJson({{QStringLiteral("campaign"), *id}, {QStringLiteral("name"), campaign.name}});
     else
