@@ -121,16 +121,17 @@ private:
     std::unique_ptr<SampleBlockWriter> m_samples;
 };
 
-/// The campaign already stored with this content, if any.
-std::optional<std::pair<qint64, QString>> storedWithContent(QSqlDatabase& db,
-                                                            const QByteArray& sha256) {
-    QSqlQuery q(db);
-    q.prepare(
-        QStringLiteral("SELECT id, name || ' (imported ' || imported_at || ')' FROM campaign "
-                       "WHERE content_sha256 = ? ORDER BY id LIMIT 1"));
-    q.addBindValue(QString::fromLatin1(sha256));
-    if (q.exec() && q.next()) return std::pair(q.value(0).toLongLong(), q.value(1).toString());
-    return std::nullopt;
+/// Rows are checked and dropped: the first pass of an import keeps nothing.
+class DiscardingSink : public SampleRowSink {
+public:
+    void begin(const Campaign&) override {}
+    void row(std::size_t, double, const double*) override {}
+};
+
+/// "path/file:line:column: why" of a reader's error.
+QString located(const BundleSource& source, BundleError e) {
+    e.file = source.displayPath(e.file);
+    return e.toString();
 }
 
 }  // namespace
@@ -168,42 +169,55 @@ std::optional<qint64> CampaignStore::importCampaign(const Campaign& c, QString* 
     }
 }
 
-BundleImportResult importBundle(CampaignStore& store, const BundleSource& source,
-                                const BundleImportOptions& options) {
-    BundleImportResult result;
+BundleCheck checkBundle(const BundleSource& source, const std::function<bool(double)>& progress) {
+    BundleCheck check;
+    DiscardingSink discard;
+    const BundleReadResult read = readBundle(source, {progress, &discard});
+    if (!read.ok()) {
+        check.error = located(source, *read.error);
+        return check;
+    }
+    check.name = read.campaign->name;
+    check.warnings = read.warnings;
     QString error;
-    result.contentSha256 = bundleContentSha256(source, &error);
-    if (result.contentSha256.isEmpty()) {
-        result.error = source.location() + QStringLiteral(": ") + error;
-        return result;
-    }
+    check.contentSha256 = bundleContentSha256(source, &error);
+    if (check.contentSha256.isEmpty())
+        check.error = source.location() + QStringLiteral(": ") + error;
+    return check;
+}
+
+std::optional<QString> alreadyImported(CampaignStore& store, const BundleSource& source,
+                                       const BundleCheck& checked) {
+    QSqlQuery q(store.database());
+    q.prepare(
+        QStringLiteral("SELECT id, name, imported_at FROM campaign WHERE content_sha256 = ? "
+                       "ORDER BY id LIMIT 1"));
+    q.addBindValue(QString::fromLatin1(checked.contentSha256));
+    if (!q.exec() || !q.next()) return std::nullopt;
+    return QStringLiteral(
+               "%1 is already in %2 as campaign %3, '%4' (imported %5); --again "
+               "imports it once more")
+        .arg(source.location(), store.path(), q.value(0).toString(), q.value(1).toString(),
+             q.value(2).toString());
+}
+
+BundleImportResult importBundle(CampaignStore& store, const BundleSource& source,
+                                const BundleCheck& checked, const BundleImportOptions& options) {
+    BundleImportResult result;
     QSqlDatabase& db = store.database();
-    if (auto earlier = storedWithContent(db, result.contentSha256); earlier && !options.again) {
-        result.duplicateOf = earlier->first;
-        result.error = QStringLiteral(
-                           "%1 is already in %2 as campaign %3, '%4'; --again imports "
-                           "it once more")
-                           .arg(source.location(), store.path())
-                           .arg(earlier->first)
-                           .arg(earlier->second);
-        return result;
-    }
     if (!db.transaction()) {
         result.error =
             store.path() + QStringLiteral(": cannot start a transaction: ") + db.lastError().text();
         return result;
     }
     try {
+        // Inside the transaction, so two imports of one bundle at once cannot both pass.
+        if (!options.again)
+            if (auto why = alreadyImported(store, source, checked)) throw *why;
         CampaignWriter writer(db);
         BundleReadResult read = readBundle(source, {options.progress, &writer});
-        if (!read.ok()) {
-            BundleError e = *read.error;
-            e.file = source.displayPath(e.file);
-            throw e.toString();
-        }
-        result.warnings = read.warnings;
-        result.name = read.campaign->name;
-        const qint64 id = writer.finish(*read.campaign, result.contentSha256);
+        if (!read.ok()) throw located(source, *read.error);
+        const qint64 id = writer.finish(*read.campaign, checked.contentSha256);
         if (!db.commit()) throw QStringLiteral("commit failed: ") + db.lastError().text();
         result.campaignId = id;
     } catch (const QString& why) {

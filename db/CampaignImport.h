@@ -13,6 +13,25 @@
 
 namespace driftlab::db {
 
+/// The first pass of an import, before the store is opened: the whole bundle
+/// read and validated with its rows discarded as they go (memory stays flat),
+/// and its content hash. A bad bundle is refused here, so a store it was meant
+/// for is never opened for writing and stays byte for byte as it was.
+struct BundleCheck {
+    QString error;             ///< empty when the bundle is good; else "path:line:column: why"
+    QString name;              ///< the campaign's name
+    QStringList warnings;      ///< read but unusual ("file:line: ...")
+    QByteArray contentSha256;  ///< hex, see bundleContentSha256
+    bool ok() const { return error.isEmpty(); }
+};
+BundleCheck checkBundle(const BundleSource& source,
+                        const std::function<bool(double)>& progress = {});
+
+/// Why `store` must not take the checked bundle again: it already holds a
+/// campaign imported from the same content (named with its id and date).
+std::optional<QString> alreadyImported(CampaignStore& store, const BundleSource& source,
+                                       const BundleCheck& checked);
+
 struct BundleImportOptions {
     /// Fraction done (0..1); return false to cancel (nothing is stored).
     std::function<bool(double)> progress;
@@ -22,14 +41,14 @@ struct BundleImportOptions {
 
 struct BundleImportResult {
     std::optional<qint64> campaignId;  ///< set when stored
-    QString name;
-    QStringList warnings;  ///< read but unusual ("file:line: ...")
-    QString error;         ///< why nothing was stored; bundle errors as path:line:column: why
-    std::optional<qint64> duplicateOf;  ///< the campaign already holding the same content
-    QByteArray contentSha256;           ///< hex, of the bundle's files (see bundleContentSha256)
+    QString error;                     ///< why nothing was stored
 };
 
+/// The second pass: the checked bundle streamed into the store in one
+/// transaction, refused when the store already holds its content (unless
+/// `again`). On any failure the transaction is rolled back.
 BundleImportResult importBundle(CampaignStore& store, const BundleSource& source,
+                                const BundleCheck& checked,
                                 const BundleImportOptions& options = {});
 
 }  // namespace driftlab::db

@@ -1,6 +1,9 @@
 #pragma once
-// The campaign store: one SQLite file (WAL, foreign keys on) holding campaigns,
-// their runs and data, and what DriftLab derives from them (DESIGN.md section 3).
+// The campaign store: one SQLite file (WAL while written, foreign keys on)
+// holding campaigns, their runs and data, and what DriftLab derives from them
+// (DESIGN.md section 3). It marks itself with an application_id, never writes
+// into another application's file, and is read with read-only connections by
+// the commands that only read.
 
 #include <QSqlDatabase>
 #include <QString>
@@ -13,6 +16,24 @@
 
 namespace driftlab::db {
 
+/// SQLite `PRAGMA application_id` of a DriftLab store: "DRFT" in ASCII. Written
+/// when a store is created or opened for writing (a store of the builds before
+/// it, id 0, is stamped then); DriftLab writes into no file with another id.
+inline constexpr quint32 kStoreApplicationId = 0x44524654;
+
+/// How a store is opened.
+enum class StoreAccess {
+    /// An existing store, read with SQLite's read-only flags: never created,
+    /// migrated or stamped; works on read-only media and leaves no -wal/-shm.
+    ReadOnly,
+    /// An existing store to write into (a missing file is an error), migrated
+    /// to this build's schema and stamped with kStoreApplicationId.
+    ReadWrite,
+    /// As ReadWrite, but a missing file is created: built under a temporary
+    /// name in the same folder, renamed to its path only by publish().
+    CreateIfMissing,
+};
+
 struct CampaignSummary {
     qint64 id = 0;
     QString name;
@@ -22,9 +43,12 @@ struct CampaignSummary {
 
 class CampaignStore {
 public:
-    /// Opens or creates the database file and migrates it to the latest schema.
-    /// Returns nullptr and sets `error` on failure.
-    static std::unique_ptr<CampaignStore> open(const QString& path, QString* error);
+    /// Opens the store at `path` as `access` says, after checking read-only that
+    /// the file is a DriftLab store (or, for writing, an empty database). Returns
+    /// nullptr and sets `error` ("PATH: why") on failure; the file is then untouched.
+    static std::unique_ptr<CampaignStore> open(const QString& path, StoreAccess access,
+                                               QString* error);
+    /// Closes the store; a new store that was not published is deleted.
     ~CampaignStore();
     CampaignStore(const CampaignStore&) = delete;
     CampaignStore& operator=(const CampaignStore&) = delete;
@@ -37,12 +61,31 @@ public:
     std::optional<Campaign> loadCampaign(qint64 id, QString* error) const;
     std::vector<CampaignSummary> listCampaigns() const;
 
+    /// Closes the store and, when it is new (CreateIfMissing on a missing file),
+    /// renames it from its temporary name to path(). False with `error` when that
+    /// fails (a file appeared at the path meanwhile); the new store is then deleted.
+    /// The store cannot be used afterwards.
+    bool publish(QString* error);
+    /// Whether this store was created by open() and is not yet at path().
+    bool isNew() const { return !m_temporaryPath.isEmpty(); }
+
     QSqlDatabase& database() { return m_db; }
-    QString path() const { return m_db.databaseName(); }
+    /// The path the store was opened with (also for a new one not yet published).
+    QString path() const { return m_path; }
+    StoreAccess access() const { return m_access; }
 
 private:
-    explicit CampaignStore(QSqlDatabase db) : m_db(std::move(db)) {}
+    CampaignStore(QSqlDatabase db, QString path, StoreAccess access, QString temporaryPath)
+        : m_db(std::move(db)),
+          m_path(std::move(path)),
+          m_access(access),
+          m_temporaryPath(std::move(temporaryPath)) {}
+    void close();
+
     QSqlDatabase m_db;
+    QString m_path;
+    StoreAccess m_access;
+    QString m_temporaryPath;  ///< where a new store is built until publish()
 };
 
 }  // namespace driftlab::db

@@ -48,6 +48,10 @@ int latestSchemaVersion() {
     return int(migrationFiles().size());
 }
 
+int oldestReadableSchemaVersion() {
+    return 1;
+}
+
 int schemaVersion(QSqlDatabase& db) {
     QSqlQuery q(db);
     return q.exec(QStringLiteral("PRAGMA user_version")) && q.next() ? q.value(0).toInt() : -1;

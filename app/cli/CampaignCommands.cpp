@@ -1,4 +1,5 @@
 // import, export and info: campaigns between bundles and the database.
+#include <QFileInfo>
 #include <QJsonArray>
 
 #include "app/cli/CliCommon.h"
@@ -13,10 +14,11 @@ const QCommandLineOption kDbOption{QStringLiteral("db"),
                                    QStringLiteral("Campaign database (SQLite file)."),
                                    QStringLiteral("FILE")};
 
+/// The --db store to import into; a missing one is created, visible only once published.
 std::unique_ptr<db::CampaignStore> openStore(const QCommandLineParser& parser) {
-    if (!parser.isSet(kDbOption)) throw CliError(QStringLiteral("--db FILE is required"), 2);
     QString error;
-    auto store = db::CampaignStore::open(parser.value(kDbOption), &error);
+    auto store =
+        db::CampaignStore::open(parser.value(kDbOption), db::StoreAccess::CreateIfMissing, &error);
     if (!store) throw CliError(error);
     return store;
 }
@@ -31,20 +33,36 @@ int importCommand(const QStringList& args) {
     parseArguments(parser, args, {kDbOption, again}, QStringLiteral("BUNDLE"));
     if (parser.positionalArguments().size() != 1)
         throw CliError(QStringLiteral("give one BUNDLE folder or .zip"), 2);
+    if (!parser.isSet(kDbOption)) throw CliError(QStringLiteral("--db FILE is required"), 2);
+    const QString dbPath = parser.value(kDbOption);
     const auto source = openBundleOrFail(parser.positionalArguments().front());
+    // Pass 1, before the store is touched: the whole bundle validated (rows
+    // discarded as read) and hashed. A bad or repeated bundle leaves the store
+    // byte for byte as it was, and a store that does not exist is not created.
+    const db::BundleCheck checked = db::checkBundle(
+        *source, [](double f) { return printProgress(QStringLiteral("checking bundle"), f); });
+    printWarnings(checked.warnings);
+    if (!checked.ok()) throw CliError(checked.error);
+    if (!parser.isSet(again) && QFileInfo::exists(dbPath)) {
+        QString error;
+        auto reader = db::CampaignStore::open(dbPath, db::StoreAccess::ReadOnly, &error);
+        if (!reader) throw CliError(error);
+        if (auto why = db::alreadyImported(*reader, *source, checked)) throw CliError(*why);
+    }
+    // Pass 2: streamed into the store in one transaction; a new store becomes
+    // visible under its name only once the import committed.
     auto store = openStore(parser);
-    // Read, validated and stored in one streaming pass inside one transaction.
     db::BundleImportOptions options;
     options.progress = [](double f) { return printProgress(QStringLiteral("importing"), f); };
     options.again = parser.isSet(again);
-    const db::BundleImportResult result = db::importBundle(*store, *source, options);
-    printWarnings(result.warnings);
-    if (!result.campaignId) throw CliError(result.error);
+    const db::BundleImportResult result = db::importBundle(*store, *source, checked, options);
+    QString error = result.error;
+    if (!result.campaignId || !store->publish(&error)) throw CliError(error);
     if (parser.isSet(QStringLiteral("json")))
         printJson({{QStringLiteral("campaign"), *result.campaignId},
-                   {QStringLiteral("name"), result.name},
-                   {QStringLiteral("content_sha256"), QString::fromLatin1(result.contentSha256)},
-                   {QStringLiteral("warnings"), QJsonArray::fromStringList(result.warnings)}});
+                   {QStringLiteral("name"), checked.name},
+                   {QStringLiteral("content_sha256"), QString::fromLatin1(checked.contentSha256)},
+                   {QStringLiteral("warnings"), QJsonArray::fromStringList(checked.warnings)}});
     else
         printLine(QString::number(*result.campaignId));
     return 0;

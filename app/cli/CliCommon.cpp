@@ -32,13 +32,13 @@ QList<QCommandLineOption> campaignSourceOptions() {
              QStringLiteral("ID")}};
 }
 
-Campaign loadCampaignSource(const QCommandLineParser& parser) {
+Campaign loadCampaignSource(const QCommandLineParser& parser, db::StoreAccess access) {
     const QStringList positional = parser.positionalArguments();
     if (parser.isSet(QStringLiteral("db"))) {
         bool ok = false;
         const qint64 id = parser.value(QStringLiteral("campaign")).toLongLong(&ok);
         if (!ok) throw CliError(QStringLiteral("--db needs --campaign ID (a number)"), 2);
-        auto store = openSourceStore(parser);
+        auto store = openSourceStore(parser, access);
         QString error;
         auto campaign = store->loadCampaign(id, &error);
         if (!campaign) throw CliError(error);
@@ -49,9 +49,10 @@ Campaign loadCampaignSource(const QCommandLineParser& parser) {
     return readBundleOrFail(positional.front());
 }
 
-std::unique_ptr<db::CampaignStore> openSourceStore(const QCommandLineParser& parser) {
+std::unique_ptr<db::CampaignStore> openSourceStore(const QCommandLineParser& parser,
+                                                   db::StoreAccess access) {
     QString error;
-    auto store = db::CampaignStore::open(parser.value(QStringLiteral("db")), &error);
+    auto store = db::CampaignStore::open(parser.value(QStringLiteral("db")), access, &error);
     if (!store) throw CliError(error);
     return store;
 }
@@ -59,7 +60,7 @@ std::unique_ptr<db::CampaignStore> openSourceStore(const QCommandLineParser& par
 std::optional<qint64> storeFitIfFromDatabase(const QCommandLineParser& parser,
                                              const db::ModelFitRecord& record) {
     if (!parser.isSet(QStringLiteral("db"))) return std::nullopt;
-    auto store = openSourceStore(parser);
+    auto store = openSourceStore(parser, db::StoreAccess::ReadWrite);
     QString error;
     auto id = db::storeModelFit(*store, parser.value(QStringLiteral("campaign")).toLongLong(),
                                 record, &error);

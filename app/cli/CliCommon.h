@@ -28,11 +28,15 @@ void parseArguments(QCommandLineParser& parser, const QStringList& args,
 
 /// --db FILE and --campaign ID, for commands that take a BUNDLE.
 QList<QCommandLineOption> campaignSourceOptions();
-/// The campaign named by the positional BUNDLE or by --db/--campaign.
-Campaign loadCampaignSource(const QCommandLineParser& parser);
-/// With --db: the database of the campaign, opened (throws CliError).
-std::unique_ptr<db::CampaignStore> openSourceStore(const QCommandLineParser& parser);
-/// Stores a fit when the campaign came from --db; returns its id.
+/// The campaign named by the positional BUNDLE or by --db/--campaign. Commands
+/// that store results in the --db store load it with ReadWrite, so that a store
+/// they cannot write is refused before the work, not after.
+Campaign loadCampaignSource(const QCommandLineParser& parser,
+                            db::StoreAccess access = db::StoreAccess::ReadOnly);
+/// With --db: the database of the campaign, opened (throws CliError); never created.
+std::unique_ptr<db::CampaignStore> openSourceStore(const QCommandLineParser& parser,
+                                                   db::StoreAccess access);
+/// Stores a fit when the campaign came from --db (opened ReadWrite); returns its id.
 std::optional<qint64> storeFitIfFromDatabase(const QCommandLineParser& parser,
                                              const db::ModelFitRecord& record);
 

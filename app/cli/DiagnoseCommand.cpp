@@ -74,7 +74,8 @@ int diagnoseCommand(const QStringList& args) {
                    QStringLiteral("BUNDLE"));
     if (parser.isSet(train) != parser.isSet(test))
         throw CliError(QStringLiteral("give both --train and --test, or neither"), 2);
-    const Campaign campaign = loadCampaignSource(parser);
+    // With --db the diagnosis is stored: the store must be writable.
+    const Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
     diagnosis::DiagnosisOptions options;
     options.train_runs = runList(parser.value(train));
     options.test_runs = runList(parser.value(test));
@@ -116,7 +117,7 @@ int diagnoseCommand(const QStringList& args) {
                          QStringLiteral("positioning"), r.train_runs, r.test_runs, parameters,
                          findingJson(f, r.base_test)[QStringLiteral("gain")].toObject()});
         }
-        auto store = openSourceStore(parser);
+        auto store = openSourceStore(parser, db::StoreAccess::ReadWrite);
         QString error;
         if (!db::storeDiagnosis(*store, parser.value(QStringLiteral("campaign")).toLongLong(),
                                 {0, QStringLiteral("screw-fdm"), r.verdict, adopted, json}, &error))

@@ -56,7 +56,8 @@ int fitCommand(const QStringList& args) {
         throw CliError(QStringLiteral("--model: '%1' is not a model (%2)")
                            .arg(parser.value(model), models::modelNames().join(", ")),
                        2);
-    const Campaign campaign = loadCampaignSource(parser);
+    // With --db the fit is stored: the store must be writable.
+    const Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
     const QString target = parser.value(kTargetOption);
     const QStringList all = modelledRuns(campaign, target);
     QStringList trainRuns = parser.isSet(train) ? runList(parser.value(train)) : all.mid(0, 1);

@@ -18,9 +18,11 @@ static void BM_ImportMillionSampleBundle(benchmark::State& state) {
     for (auto _ : state) {
         BundleReadResult read = readBundle(bundle);
         QString error;
-        auto store = db::CampaignStore::open(
-            dir.filePath(QStringLiteral("lab%1.sqlite").arg(round++)), &error);
-        if (!read.ok() || !store || !store->importCampaign(*read.campaign, &error))
+        auto store =
+            db::CampaignStore::open(dir.filePath(QStringLiteral("lab%1.sqlite").arg(round++)),
+                                    db::StoreAccess::CreateIfMissing, &error);
+        if (!read.ok() || !store || !store->importCampaign(*read.campaign, &error) ||
+            !store->publish(&error))
             state.SkipWithError("import failed");
     }
     state.counters["samples_per_s"] =

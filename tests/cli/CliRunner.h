@@ -13,9 +13,13 @@ struct CliResult {
     QByteArray err;
 };
 
-inline CliResult runCli(const QStringList& args) {
+/// `wrapper`, when given, runs the CLI (e.g. setpriv … to run it as another user).
+inline CliResult runCli(const QStringList& args, const QStringList& wrapper = {}) {
     QProcess p;
-    p.start(QStringLiteral(DRIFTLAB_CLI), args);
+    if (wrapper.isEmpty())
+        p.start(QStringLiteral(DRIFTLAB_CLI), args);
+    else
+        p.start(wrapper.front(), wrapper.mid(1) << QStringLiteral(DRIFTLAB_CLI) << args);
     EXPECT_TRUE(p.waitForFinished(300'000)) << "driftlab-cli " << qPrintable(args.join(' '));
     return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
             p.readAllStandardError()};

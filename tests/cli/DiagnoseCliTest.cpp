@@ -60,7 +60,7 @@ TEST(DiagnoseCli, findsAHiddenSensorLagAndKeepsTheExtension) {
         EXPECT_FALSE(QImage(png.toString()).isNull()) << qPrintable(png.toString());
 
     QString error;
-    auto store = db::CampaignStore::open(dbPath, &error);
+    auto store = db::CampaignStore::open(dbPath, db::StoreAccess::ReadOnly, &error);
     ASSERT_TRUE(store) << qPrintable(error);
     const auto stored = db::diagnoses(*store, id.toLongLong());
     ASSERT_EQ(stored.size(), 1u);

@@ -67,7 +67,7 @@ TEST(ModelCli, fitFromTheDatabaseIsStoredWithItsRunsAndFigures) {
     ASSERT_EQ(r.exitCode, 0) << r.err.constData();
 
     QString error;
-    auto store = db::CampaignStore::open(dbPath, &error);
+    auto store = db::CampaignStore::open(dbPath, db::StoreAccess::ReadOnly, &error);
     ASSERT_TRUE(store) << qPrintable(error);
     const auto fits = db::modelFits(*store, id.toLongLong());
     ASSERT_EQ(fits.size(), 1u);

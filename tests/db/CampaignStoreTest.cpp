@@ -22,11 +22,25 @@ Campaign exampleCampaign() {
     return *r.campaign;
 }
 
+/// The store at `path` opened for writing; created (empty) first if missing.
 std::unique_ptr<CampaignStore> openStore(const QString& path) {
     QString error;
-    auto store = CampaignStore::open(path, &error);
+    if (auto created = CampaignStore::open(path, db::StoreAccess::CreateIfMissing, &error);
+        created && created->isNew()) {
+        EXPECT_TRUE(created->publish(&error)) << qPrintable(error);
+    }
+    auto store = CampaignStore::open(path, db::StoreAccess::ReadWrite, &error);
     EXPECT_TRUE(store) << qPrintable(error);
     return store;
+}
+
+/// A store file without the two header fields SQLite bumps when a connection
+/// switches the journal mode (file change counter at offset 24, version-valid-for
+/// at 92): a store opened for writing rests in rollback mode again when closed,
+/// so these change even when nothing is stored. Every page is compared.
+QByteArray withoutChangeCounter(QByteArray bytes) {
+    for (int offset : {24, 92}) bytes.replace(offset, 4, QByteArray(4, '\0'));
+    return bytes;
 }
 
 }  // namespace
@@ -89,12 +103,12 @@ TEST(CampaignStore, importExportImportIsLossless) {
             << name;
 }
 
-TEST(CampaignStore, failedImportRollsBackAndLeavesTheFileByteForByteUnchanged) {
+TEST(CampaignStore, failedImportRollsBackAndLeavesTheFileUnchangedButItsChangeCounter) {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("lab.sqlite"));
     QString error;
     openStore(path)->importCampaign(exampleCampaign(), &error);
-    const QByteArray before = sha256OfFile(path);
+    const QByteArray before = withoutChangeCounter(readFile(path));
 
     // A screw that the schema's CHECK refuses fails after the campaign row is written.
     Campaign bad = exampleCampaign();
@@ -107,7 +121,7 @@ TEST(CampaignStore, failedImportRollsBackAndLeavesTheFileByteForByteUnchanged) {
         EXPECT_TRUE(error.contains(QStringLiteral("CHECK constraint failed"))) << qPrintable(error);
         EXPECT_EQ(store->listCampaigns().size(), 1u);
     }
-    EXPECT_EQ(sha256OfFile(path), before);
+    EXPECT_EQ(withoutChangeCounter(readFile(path)), before);
 }
 
 TEST(CampaignStore, cancelledImportStoresNothing) {
@@ -150,6 +164,6 @@ TEST(CampaignStore, aFileThatIsNotADatabaseIsRefusedWithItsName) {
     const QString path = dir.filePath(QStringLiteral("notes.sqlite"));
     writeFile(path, QByteArray("these are my notes, not a database\n").repeated(100));
     QString error;
-    EXPECT_FALSE(CampaignStore::open(path, &error));
-    EXPECT_TRUE(error.startsWith(path)) << qPrintable(error);
+    EXPECT_FALSE(CampaignStore::open(path, db::StoreAccess::ReadWrite, &error));
+    EXPECT_EQ(error, path + QStringLiteral(": not an SQLite database"));
 }

@@ -53,7 +53,7 @@ TEST(SchemaMigration, aSchemaV1DatabaseOpensMigratedWithItsDataIntact) {
     writeSchemaV1Database(path);
 
     QString error;
-    auto store = CampaignStore::open(path, &error);
+    auto store = CampaignStore::open(path, db::StoreAccess::ReadWrite, &error);
     ASSERT_TRUE(store) << qPrintable(error);
     EXPECT_EQ(db::schemaVersion(store->database()), db::latestSchemaVersion());
 
@@ -81,15 +81,18 @@ TEST(SchemaMigration, aDatabaseFromANewerBuildIsRefusedNotDamaged) {
     const QString path = dir.filePath(QStringLiteral("future.sqlite"));
     {
         QString error;
-        auto store = CampaignStore::open(path, &error);
+        auto store = CampaignStore::open(path, db::StoreAccess::CreateIfMissing, &error);
         ASSERT_TRUE(store);
-        QSqlQuery q(store->database());
-        ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA user_version = 99")));
+        ASSERT_TRUE(QSqlQuery(store->database()).exec(QStringLiteral("PRAGMA user_version = 99")));
+        ASSERT_TRUE(store->publish(&error)) << qPrintable(error);
     }
     const QByteArray before = test::sha256OfFile(path);
-    QString error;
-    EXPECT_FALSE(CampaignStore::open(path, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("schema v99 is newer than this build")))
-        << qPrintable(error);
+    for (auto access : {db::StoreAccess::ReadWrite, db::StoreAccess::ReadOnly}) {
+        QString error;
+        EXPECT_FALSE(CampaignStore::open(path, access, &error));
+        EXPECT_EQ(error, path + QStringLiteral(": database schema v99 is newer than this build "
+                                               "(v%1); update DriftLab")
+                                    .arg(db::latestSchemaVersion()));
+    }
     EXPECT_EQ(test::sha256OfFile(path), before);
 }
