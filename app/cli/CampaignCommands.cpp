@@ -13,7 +13,6 @@ const QCommandLineOption kDbOption{QStringLiteral("db"),
                                    QStringLiteral("FILE")};
 
 std::unique_ptr<db::CampaignStore> openStore(const QCommandLineParser& parser) {
-    if (!parser.isSet(kDbOption)) throw CliError(QStringLiteral("--db FILE is required"), 2);
     QString error;
     auto store = db::CampaignStore::open(parser.value(kDbOption), &error);
     if (!store) throw CliError(error);
@@ -24,7 +23,9 @@ std::unique_ptr<db::CampaignStore> openStore(const QCommandLineParser& parser) {
 
 int importCommand(const QStringList& args) {
     QCommandLineParser parser;
-    parseArguments(parser, args, {kDbOption}, QStringLiteral("BUNDLE"));
+    parseArguments(
+        parser, args, {kDbOption},
+        {QStringLiteral("BUNDLE"), bundleDescription(), QStringLiteral("BUNDLE"), {kDbOption}});
     if (parser.positionalArguments().size() != 1)
         throw CliError(QStringLiteral("give one BUNDLE folder"), 2);
     auto store = openStore(parser);
@@ -45,9 +46,9 @@ int exportCommand(const QStringList& args) {
     QCommandLineParser parser;
     const QCommandLineOption out{QStringLiteral("out"), QStringLiteral("Bundle folder to write."),
                                  QStringLiteral("DIR")};
-    parseArguments(parser, args, campaignSourceOptions() << out);
-    if (!parser.isSet(QStringLiteral("db")) || !parser.isSet(out))
-        throw CliError(QStringLiteral("export needs --db FILE --campaign ID --out DIR"), 2);
+    const QList<QCommandLineOption> options = campaignSourceOptions() << out;
+    // Every option is required: the campaign comes from a database, never a bundle.
+    parseArguments(parser, args, options, {{}, {}, {}, options});
     const Campaign campaign = loadCampaignSource(parser);
     if (auto error = writeBundle(campaign, parser.value(out)))
         throw CliError(parser.value(out) + QLatin1Char('/') + error->toString());
@@ -61,7 +62,7 @@ int exportCommand(const QStringList& args) {
 
 int infoCommand(const QStringList& args) {
     QCommandLineParser parser;
-    parseArguments(parser, args, campaignSourceOptions(), QStringLiteral("BUNDLE"));
+    parseArguments(parser, args, campaignSourceOptions(), campaignSourceArguments());
     const Campaign c = loadCampaignSource(parser);
 
     QJsonArray runs, channels;
