@@ -30,7 +30,9 @@ int importCommand(const QStringList& args) {
     const QCommandLineOption again{
         QStringLiteral("again"),
         QStringLiteral("Import a bundle whose content the store already holds once more.")};
-    parseArguments(parser, args, {kDbOption, again}, QStringLiteral("BUNDLE"));
+    parseArguments(
+        parser, args, {kDbOption, again},
+        {QStringLiteral("BUNDLE"), bundleDescription(), QStringLiteral("BUNDLE"), {kDbOption}});
     if (parser.positionalArguments().size() != 1)
         throw CliError(QStringLiteral("give one BUNDLE folder or .zip"), 2);
     if (!parser.isSet(kDbOption)) throw CliError(QStringLiteral("--db FILE is required"), 2);
@@ -45,9 +47,9 @@ int importCommand(const QStringList& args) {
     if (!checked.ok()) throw CliError(checked.error);
     if (!parser.isSet(again) && QFileInfo::exists(dbPath)) {
         QString error;
-        auto reader = db::CampaignStore::open(dbPath, db::StoreAccess::ReadOnly, &error);
-        if (!reader) throw CliError(error);
-        if (auto why = db::alreadyImported(*reader, *source, checked)) throw CliError(*why);
+        // A store that cannot be read here is refused below, with the writer's reason.
+        if (auto reader = db::CampaignStore::open(dbPath, db::StoreAccess::ReadOnly, &error))
+            if (auto why = db::alreadyImported(*reader, *source, checked)) throw CliError(*why);
     }
     // Pass 2: streamed into the store in one transaction; a new store becomes
     // visible under its name only once the import committed.
@@ -76,9 +78,10 @@ int exportCommand(const QStringList& args) {
     const QCommandLineOption force{
         QStringLiteral("force"),
         QStringLiteral("Replace a previous bundle in DIR as a whole (never a mix of two).")};
-    parseArguments(parser, args, campaignSourceOptions() << out << force);
-    if (!parser.isSet(QStringLiteral("db")) || !parser.isSet(out))
-        throw CliError(QStringLiteral("export needs --db FILE --campaign ID --out DIR"), 2);
+    const QList<QCommandLineOption> required = campaignSourceOptions() << out;
+    // The campaign comes from a database, never a bundle: --db, --campaign and --out are required.
+    parseArguments(parser, args, QList<QCommandLineOption>(required) << force,
+                   {{}, {}, {}, required});
     const Campaign campaign = loadCampaignSource(parser);
     if (auto error =
             writeBundle(campaign, parser.value(out),
@@ -94,7 +97,7 @@ int exportCommand(const QStringList& args) {
 
 int infoCommand(const QStringList& args) {
     QCommandLineParser parser;
-    parseArguments(parser, args, campaignSourceOptions(), QStringLiteral("BUNDLE"));
+    parseArguments(parser, args, campaignSourceOptions(), campaignSourceArguments());
     const Campaign c = loadCampaignSource(parser);
 
     QJsonArray runs, channels;

@@ -1,7 +1,10 @@
 #include "app/cli/CliCommon.h"
 
+#include "app/cli/CommandTable.h"
+
 #include <unistd.h>
 #include <QJsonDocument>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -11,18 +14,68 @@
 
 namespace driftlab::cli {
 
+namespace {
+
+/// "--db FILE": an option as a user types it.
+QString optionSyntax(const QCommandLineOption& option) {
+    QString text = QStringLiteral("--") + option.names().constLast();
+    if (!option.valueName().isEmpty()) text += QLatin1Char(' ') + option.valueName();
+    return text;
+}
+
+}  // namespace
+
 void parseArguments(QCommandLineParser& parser, const QStringList& args,
-                    const QList<QCommandLineOption>& options, const QString& positional) {
-    parser.addHelpOption();
+                    const QList<QCommandLineOption>& options, const Arguments& arguments) {
+    const QString name = args.value(0);
+    // Our own --help: Qt's addHelpOption() would add --help-all, which shows
+    // Qt's generic options that driftlab-cli does not take.
+    parser.addOption({{QStringLiteral("h"), QStringLiteral("help")},
+                      QStringLiteral("Print this help on stdout.")});
     parser.addOption(
         {QStringLiteral("json"), QStringLiteral("Print the result as JSON on stdout.")});
-    parser.addOptions(options);
-    if (!positional.isEmpty()) parser.addPositionalArgument(positional, positional);
+    QStringList required;
+    if (!arguments.positionalRequired.isEmpty()) required << arguments.positionalRequired;
+    for (QCommandLineOption option : options) {
+        const bool isRequired =
+            std::any_of(arguments.required.begin(), arguments.required.end(),
+                        [&](const QCommandLineOption& r) { return r.names() == option.names(); });
+        if (isRequired) {
+            option.setDescription(option.description() + QStringLiteral(" (required)"));
+            required << optionSyntax(option);
+        }
+        parser.addOption(option);
+    }
+    if (!arguments.positional.isEmpty())
+        parser.addPositionalArgument(arguments.positional, arguments.positionalHelp,
+                                     arguments.positional);
+    const Command* command = findCommand(name);
+    QString description = command ? command->summary : QString();
+    if (!required.isEmpty())
+        description += QStringLiteral("\nRequired: ") + required.join(QStringLiteral(", "));
+    parser.setApplicationDescription(description);
+
     if (!parser.parse(args)) throw CliError(parser.errorText(), 2);
     if (parser.isSet(QStringLiteral("help"))) {
-        std::fputs(qPrintable(parser.helpText()), stdout);
+        // Qt's usage line names the executable as it was started (a path) and
+        // not the command; the command's own usage replaces it.
+        QString help = parser.helpText();
+        help.remove(0, help.indexOf(QLatin1Char('\n')));
+        help.prepend(QStringLiteral("Usage: driftlab-cli %1 [options]%2")
+                         .arg(name, arguments.positional.isEmpty()
+                                        ? QString()
+                                        : QLatin1Char(' ') + arguments.positional));
+        std::fputs(qPrintable(help), stdout);
         throw CliError(QString(), 0);
     }
+    for (const QCommandLineOption& option : arguments.required)
+        if (!parser.isSet(option))
+            throw CliError(QStringLiteral("%1 is required").arg(optionSyntax(option)), 2);
+}
+
+QString bundleDescription() {
+    return QStringLiteral(
+        "Campaign bundle: a folder or a .zip of one (campaign.json, samples.csv, ...).");
 }
 
 QList<QCommandLineOption> campaignSourceOptions() {
@@ -30,6 +83,25 @@ QList<QCommandLineOption> campaignSourceOptions() {
              QStringLiteral("FILE")},
             {QStringLiteral("campaign"), QStringLiteral("Campaign id in the database."),
              QStringLiteral("ID")}};
+}
+
+Arguments campaignSourceArguments(const QList<QCommandLineOption>& required) {
+    return {QStringLiteral("BUNDLE"), bundleDescription(),
+            QStringLiteral("BUNDLE (or --db FILE --campaign ID)"), required};
+}
+
+void refuseOverlappingRuns(const QStringList& train, const QStringList& test) {
+    QStringList both;
+    for (const QString& id : train)
+        if (test.contains(id) && !both.contains(id)) both << id;
+    if (both.isEmpty()) return;
+    const QString why = QStringLiteral("a held-out score needs runs the model has not seen");
+    throw CliError(
+        both.size() == 1
+            ? QStringLiteral("run %1 is both a training and a test run: %2").arg(both.front(), why)
+            : QStringLiteral("runs %1 are both training and test runs: %2")
+                  .arg(both.join(QStringLiteral(", ")), why),
+        2);
 }
 
 Campaign loadCampaignSource(const QCommandLineParser& parser, db::StoreAccess access) {

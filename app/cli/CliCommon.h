@@ -21,13 +21,31 @@ struct CliError : std::runtime_error {
     int exitCode;
 };
 
-/// A parser with --help, --json and the given options; parses `args` (the
-/// command name first) and throws CliError(…, 2) on a usage error.
-void parseArguments(QCommandLineParser& parser, const QStringList& args,
-                    const QList<QCommandLineOption>& options, const QString& positional = {});
+/// What a command takes besides its optional options, for its --help and checks.
+struct Arguments {
+    QString positional;      ///< its syntax, e.g. "BUNDLE"; empty when it takes none
+    QString positionalHelp;  ///< what it is, e.g. "campaign bundle folder"
+    /// How the positional is required, for the "Required:" line (empty: not required).
+    QString positionalRequired;
+    QList<QCommandLineOption> required;  ///< options refused (exit 2) when missing
+};
 
+/// A parser with --help, --json and the given options; parses `args` (the
+/// command name first) and throws CliError(…, 2) on a usage error or a
+/// missing required option. --help prints the command's help on stdout and
+/// throws CliError(…, 0).
+void parseArguments(QCommandLineParser& parser, const QStringList& args,
+                    const QList<QCommandLineOption>& options, const Arguments& arguments = {});
+
+/// What a campaign bundle is, wherever a BUNDLE is taken.
+QString bundleDescription();
 /// --db FILE and --campaign ID, for commands that take a BUNDLE.
 QList<QCommandLineOption> campaignSourceOptions();
+/// BUNDLE or --db FILE --campaign ID, with these options required as well.
+Arguments campaignSourceArguments(const QList<QCommandLineOption>& required = {});
+/// Refuses (exit 2) runs that are both training and test runs: a held-out
+/// score of a model on runs it was fitted to would flatter it.
+void refuseOverlappingRuns(const QStringList& train, const QStringList& test);
 /// The campaign named by the positional BUNDLE or by --db/--campaign. Commands
 /// that store results in the --db store load it with ReadWrite, so that a store
 /// they cannot write is refused before the work, not after.

@@ -62,23 +62,30 @@ QJsonArray writePlots(const Campaign& campaign, const diagnosis::DiagnosisResult
 
 int diagnoseCommand(const QStringList& args) {
     QCommandLineParser parser;
-    const QCommandLineOption train{QStringLiteral("train"), QStringLiteral("Training runs."),
-                                   QStringLiteral("R,..")};
-    const QCommandLineOption test{QStringLiteral("test"), QStringLiteral("Held-out runs."),
-                                  QStringLiteral("R,..")};
+    const QCommandLineOption train{
+        QStringLiteral("train"),
+        QStringLiteral("Training runs, given with --test (default: the first three fifths of "
+                       "the feed-axis runs)."),
+        QStringLiteral("R,..")};
+    const QCommandLineOption test{
+        QStringLiteral("test"),
+        QStringLiteral("Held-out runs, none of them a training run, given with --train "
+                       "(default: the other runs)."),
+        QStringLiteral("R,..")};
     const QCommandLineOption plots{QStringLiteral("plots"),
                                    QStringLiteral("Write the residual map and before/after "
                                                   "curves of each held-out run into DIR."),
                                    QStringLiteral("DIR")};
     parseArguments(parser, args, campaignSourceOptions() << train << test << plots,
-                   QStringLiteral("BUNDLE"));
+                   campaignSourceArguments());
     if (parser.isSet(train) != parser.isSet(test))
         throw CliError(QStringLiteral("give both --train and --test, or neither"), 2);
-    // With --db the diagnosis is stored: the store must be writable.
-    const Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
     diagnosis::DiagnosisOptions options;
     options.train_runs = runList(parser.value(train));
     options.test_runs = runList(parser.value(test));
+    // Refused before the campaign is read: it is the command line that is wrong.
+    refuseOverlappingRuns(options.train_runs, options.test_runs);
+    const Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
     options.progress = [](double f) { return printProgress(QStringLiteral("diagnosing"), f); };
     const diagnosis::DiagnosisResult r = diagnosis::diagnose(campaign, options);
     if (!r.ok()) throw CliError(r.error);

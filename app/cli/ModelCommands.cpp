@@ -30,6 +30,9 @@ std::vector<models::RunData> dataset(const Campaign& campaign, const QStringList
     return std::move(result.runs);
 }
 
+/// What the diagonal of the cross-state matrix is: not a held-out score.
+const QString kDiagonal = QStringLiteral("training score (fitted and scored on the same run)");
+
 const QCommandLineOption kTargetOption{
     QStringLiteral("target"),
     QStringLiteral(
@@ -43,25 +46,34 @@ int fitCommand(const QStringList& args) {
     const QCommandLineOption model{
         QStringLiteral("model"), QStringLiteral("Model: %1.").arg(models::modelNames().join(", ")),
         QStringLiteral("NAME")};
-    const QCommandLineOption train{QStringLiteral("train"),
-                                   QStringLiteral("Training runs (default: the first)."),
-                                   QStringLiteral("R,..")};
-    const QCommandLineOption test{QStringLiteral("test"),
-                                  QStringLiteral("Test runs (default: every other run)."),
-                                  QStringLiteral("R,..")};
+    const QCommandLineOption train{
+        QStringLiteral("train"),
+        QStringLiteral("Training runs (default: the first run that is not a test run)."),
+        QStringLiteral("R,..")};
+    const QCommandLineOption test{
+        QStringLiteral("test"),
+        QStringLiteral("Held-out test runs, none of them a training run (default: every other "
+                       "run). With none, the score is a training score."),
+        QStringLiteral("R,..")};
     parseArguments(parser, args, campaignSourceOptions() << model << train << test << kTargetOption,
-                   QStringLiteral("BUNDLE"));
+                   campaignSourceArguments({model}));
     auto m = models::makeModel(parser.value(model));
     if (!m)
         throw CliError(QStringLiteral("--model: '%1' is not a model (%2)")
                            .arg(parser.value(model), models::modelNames().join(", ")),
                        2);
-    // With --db the fit is stored: the store must be writable.
+    QStringList trainRuns = runList(parser.value(train));
+    QStringList testRuns = runList(parser.value(test));
+    refuseOverlappingRuns(trainRuns, testRuns);
     const Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
     const QString target = parser.value(kTargetOption);
     const QStringList all = modelledRuns(campaign, target);
-    QStringList trainRuns = parser.isSet(train) ? runList(parser.value(train)) : all.mid(0, 1);
-    QStringList testRuns = parser.isSet(test) ? runList(parser.value(test)) : QStringList();
+    if (!parser.isSet(train))
+        for (const QString& id : all)
+            if (!testRuns.contains(id)) {
+                trainRuns << id;
+                break;
+            }
     if (!parser.isSet(test))
         for (const QString& id : all)
             if (!trainRuns.contains(id)) testRuns << id;
@@ -81,27 +93,35 @@ int fitCommand(const QStringList& args) {
     for (const auto& [name, value] : fit.metrics) metrics[name] = jsonNumber(value);
     metrics[QStringLiteral("train_rms_um")] = jsonNumber(fit.rms_um);
     metrics[QStringLiteral("iterations")] = fit.iterations;
-    QJsonObject testScore;
-    if (!testRuns.isEmpty()) {
-        const models::Score score = models::scoreModel(*m, dataset(campaign, testRuns, target));
-        if (!score.ok()) throw CliError(score.error);
-        testScore = {
-            {QStringLiteral("rms_um"), jsonNumber(score.rms_um)},
-            {QStringLiteral("peak_um"), jsonNumber(score.peak_um)},
-            {QStringLiteral("reduction"), jsonNumber(score.reduction)},
-            {QStringLiteral("uncompensated_rms_um"), jsonNumber(score.uncompensated_rms_um)}};
-        metrics[QStringLiteral("test")] = testScore;
-    }
+    // With no run left out (one run, or --test with none) the only score there
+    // is comes from the training runs: it is labelled so, and never stands
+    // where a script or the database expects a held-out score.
+    const bool heldOut = !testRuns.isEmpty();
+    const QStringList scoredRuns = heldOut ? testRuns : trainRuns;
+    const models::Score score = models::scoreModel(*m, dataset(campaign, scoredRuns, target));
+    if (!score.ok()) throw CliError(score.error);
+    const QJsonObject figures{
+        {QStringLiteral("rms_um"), jsonNumber(score.rms_um)},
+        {QStringLiteral("peak_um"), jsonNumber(score.peak_um)},
+        {QStringLiteral("reduction"), jsonNumber(score.reduction)},
+        {QStringLiteral("uncompensated_rms_um"), jsonNumber(score.uncompensated_rms_um)}};
+    const QString scoreKind = heldOut ? QStringLiteral("held_out") : QStringLiteral("training");
+    metrics[QStringLiteral("score_kind")] = scoreKind;
+    metrics[heldOut ? QStringLiteral("test") : QStringLiteral("training")] = figures;
     storeFitIfFromDatabase(
         parser, {0, m->name(), target.isEmpty() ? QStringLiteral("positioning") : target, trainRuns,
                  testRuns, parameters, metrics});
 
     if (parser.isSet(QStringLiteral("json"))) {
+        QJsonObject scored = figures;
+        scored[QStringLiteral("runs")] = QJsonArray::fromStringList(scoredRuns);
         printJson({{QStringLiteral("model"), m->name()},
                    {QStringLiteral("train_runs"), QJsonArray::fromStringList(trainRuns)},
                    {QStringLiteral("test_runs"), QJsonArray::fromStringList(testRuns)},
                    {QStringLiteral("parameters"), parameters},
-                   {QStringLiteral("test"), testScore},
+                   {QStringLiteral("score_kind"), scoreKind},
+                   {QStringLiteral("score"), scored},
+                   {QStringLiteral("test"), heldOut ? figures : QJsonObject()},
                    {QStringLiteral("fit"),
                     QJsonObject{{QStringLiteral("message"), fit.message},
                                 {QStringLiteral("rms_um"), jsonNumber(fit.rms_um)},
@@ -118,13 +138,14 @@ int fitCommand(const QStringList& args) {
                                                   : QStringLiteral("?"))
                       .arg(p.unit));
     for (const QString& note : fit.notes) printLine(QStringLiteral("  note: ") + note);
-    if (!testScore.isEmpty())
-        printLine(
-            QStringLiteral("test on %1: RMS %2 µm, peak %3 µm, %4 % of the thermal error removed")
-                .arg(testRuns.join(QLatin1Char(',')))
-                .arg(testScore[QStringLiteral("rms_um")].toDouble(), 0, 'f', 2)
-                .arg(testScore[QStringLiteral("peak_um")].toDouble(), 0, 'f', 2)
-                .arg(100 * testScore[QStringLiteral("reduction")].toDouble(), 0, 'f', 1));
+    printLine((heldOut ? QStringLiteral("held-out score on %1 (runs the fit has not seen)")
+                       : QStringLiteral("training score on %1 (the runs it was fitted on; no "
+                                        "run held out, so not a held-out score)"))
+                  .arg(scoredRuns.join(QLatin1Char(','))) +
+              QStringLiteral(": RMS %1 µm, peak %2 µm, %3 % of the thermal error removed")
+                  .arg(score.rms_um, 0, 'f', 2)
+                  .arg(score.peak_um, 0, 'f', 2)
+                  .arg(100 * score.reduction, 0, 'f', 1));
     return 0;
 }
 
@@ -134,7 +155,7 @@ int compareCommand(const QStringList& args) {
                                   QStringLiteral("Models to compare (default: all)."),
                                   QStringLiteral("NAME,..")};
     parseArguments(parser, args, campaignSourceOptions() << only << kTargetOption,
-                   QStringLiteral("BUNDLE"));
+                   campaignSourceArguments());
     const Campaign campaign = loadCampaignSource(parser);
     const QString target = parser.value(kTargetOption);
     const QStringList runs = modelledRuns(campaign, target);
@@ -164,12 +185,14 @@ int compareCommand(const QStringList& args) {
     printProgress(QStringLiteral("comparing"), 1);
     if (parser.isSet(QStringLiteral("json"))) {
         printJson({{QStringLiteral("runs"), QJsonArray::fromStringList(runs)},
-                   {QStringLiteral("models"), modelsJson}});
+                   {QStringLiteral("models"), modelsJson},
+                   {QStringLiteral("diagonal"), kDiagonal}});
         return 0;
     }
     printLine(
         QStringLiteral("RMS residual (µm) on each run (columns) of the model fitted on "
                        "each run (rows)"));
+    printLine(QStringLiteral("(…) on the diagonal: %1; off it: held-out scores").arg(kDiagonal));
     for (const QString& name : names) {
         printLine(QStringLiteral("\n%1").arg(name));
         QString header = QStringLiteral("%1").arg(QString(), -8);
@@ -178,9 +201,12 @@ int compareCommand(const QStringList& args) {
         const QJsonArray rows = modelsJson[name].toObject()[QStringLiteral("rms_um")].toArray();
         for (int i = 0; i < rows.size(); ++i) {
             QString line = QStringLiteral("%1").arg(runs[i], -8);
-            for (const auto& v : rows[i].toArray())
-                line += v.isNull() ? QStringLiteral("%1").arg(QStringLiteral("—"), 9)
-                                   : QStringLiteral("%1").arg(v.toDouble(), 9, 'f', 2);
+            const QJsonArray row = rows[i].toArray();
+            for (int j = 0; j < row.size(); ++j) {
+                const QString v = row[j].isNull() ? QStringLiteral("—")
+                                                  : QString::number(row[j].toDouble(), 'f', 2);
+                line += QStringLiteral("%1").arg(i == j ? QStringLiteral("(%1)").arg(v) : v, 9);
+            }
             printLine(line);
         }
         for (const auto& e : modelsJson[name].toObject()[QStringLiteral("errors")].toArray())

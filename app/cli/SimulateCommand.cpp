@@ -34,8 +34,7 @@ int simulateCommand(const QStringList& args) {
         QStringLiteral("plots"),
         QStringLiteral("Write PNG plots of the first run's true screw state into DIR."),
         QStringLiteral("DIR")};
-    parseArguments(parser, args, {out, effect, seed, runs, spindle, plots});
-    if (!parser.isSet(out)) throw CliError(QStringLiteral("simulate needs --out DIR"), 2);
+    parseArguments(parser, args, {out, effect, seed, runs, spindle, plots}, {{}, {}, {}, {out}});
 
     rig::RigSpec spec;
     bool seedOk = false;

@@ -7,21 +7,74 @@
 #include <QApplication>
 
 #include <cstdio>
-#include <functional>
-#include <map>
 
 #include "app/cli/CliCommon.h"
+#include "app/cli/CommandTable.h"
 
-namespace driftlab::cli {
-int importCommand(const QStringList& args);
-int exportCommand(const QStringList& args);
-int infoCommand(const QStringList& args);
-int simulateCommand(const QStringList& args);
-int fitCommand(const QStringList& args);
-int compareCommand(const QStringList& args);
-int benchCommand(const QStringList& args);
-int diagnoseCommand(const QStringList& args);
-}  // namespace driftlab::cli
+namespace {
+
+using namespace driftlab::cli;
+
+/// The usage on stderr and, as its last line, why the command line was refused.
+int refuseCommandLine(const QString& why) {
+    std::fputs(qPrintable(usageText()), stderr);
+    std::fprintf(stderr, "\ndriftlab-cli: %s\n", qPrintable(why));
+    return kExitUsage;
+}
+
+QString unknownCommandReason(const QString& name) {
+    if (name.startsWith(QLatin1Char('-')))
+        return QStringLiteral("unknown option '%1' (a COMMAND comes first, its options after it)")
+            .arg(name);
+    const QString near = closestCommand(name);
+    return near.isEmpty()
+               ? QStringLiteral("unknown command '%1'").arg(name)
+               : QStringLiteral("unknown command '%1' (did you mean '%2'?)").arg(name, near);
+}
+
+/// Runs one command: `args` from the command name on.
+int runCommand(const Command& command, const QStringList& args) {
+    if (!command.run) {
+        // Exit 3, not the usage: the command line is right, this version lacks the command.
+        std::fprintf(stderr, "driftlab-cli %s: %s\n", qPrintable(command.name),
+                     qPrintable(notBuiltReason()));
+        return kExitNotBuilt;
+    }
+    try {
+        return command.run(args);
+    } catch (const CliError& e) {
+        endProgressLine();
+        if (e.exitCode != kExitOk)
+            std::fprintf(stderr, "driftlab-cli %s: %s\n", qPrintable(command.name), e.what());
+        return e.exitCode;
+    }
+}
+
+int dispatch(const QStringList& args) {
+    if (args.isEmpty()) return refuseCommandLine(QStringLiteral("a command is needed"));
+    const QString& first = args.front();
+    if (first == QLatin1String("--version")) {
+        std::printf("driftlab-cli %s\n", DRIFTLAB_VERSION);
+        return kExitOk;
+    }
+    // Help that was asked for is the answer, so it goes to stdout with success.
+    if (first == QLatin1String("--help") || first == QLatin1String("-h") ||
+        (first == QLatin1String("help") && args.size() == 1)) {
+        std::fputs(qPrintable(usageText()), stdout);
+        return kExitOk;
+    }
+    if (first == QLatin1String("help")) {
+        if (args.size() > 2) return refuseCommandLine(QStringLiteral("help takes one COMMAND"));
+        const Command* command = findCommand(args[1]);
+        if (!command) return refuseCommandLine(unknownCommandReason(args[1]));
+        return runCommand(*command, {command->name, QStringLiteral("--help")});
+    }
+    const Command* command = findCommand(first);
+    if (!command) return refuseCommandLine(unknownCommandReason(first));
+    return runCommand(*command, args);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     // Plots are rendered offscreen; the CLI never opens a window.
@@ -38,41 +91,5 @@ int main(int argc, char** argv) {
     FLAGS_minloglevel = google::GLOG_FATAL;
     QCoreApplication::setApplicationName(QStringLiteral("driftlab-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIFTLAB_VERSION));
-    using namespace driftlab::cli;
-    const std::map<QString, std::pair<std::function<int(const QStringList&)>, const char*>>
-        commands{
-            {QStringLiteral("import"),
-             {importCommand, "import BUNDLE --db FILE     store a bundle (one transaction)"}},
-            {QStringLiteral("export"),
-             {exportCommand, "export --db FILE --campaign ID --out DIR   write a bundle back"}},
-            {QStringLiteral("info"),
-             {infoCommand, "info BUNDLE                 runs, channels, counts"}},
-            {QStringLiteral("simulate"),
-             {simulateCommand,
-              "simulate --out DIR [--effect ID=VALUE]... [--seed N]   a campaign from the rig"}},
-            {QStringLiteral("fit"),
-             {fitCommand, "fit BUNDLE --model NAME [--train R,..] [--test R,..] [--target CH]"}},
-            {QStringLiteral("compare"),
-             {compareCommand, "compare BUNDLE              every model, cross-state matrix"}},
-            {QStringLiteral("diagnose"),
-             {diagnoseCommand,
-              "diagnose BUNDLE [--train R,.. --test R,..]   what the model misses, why"}},
-            {QStringLiteral("bench"),
-             {benchCommand, "bench [--json]              the performance figures of this machine"}},
-        };
-    QStringList args = app.arguments();
-    if (args.size() < 2 || !commands.count(args[1])) {
-        std::fprintf(stderr,
-                     "usage: driftlab-cli COMMAND [options]  (COMMAND --help for its options)\n");
-        for (const auto& [name, command] : commands) std::fprintf(stderr, "  %s\n", command.second);
-        return args.size() >= 2 && args[1] == QLatin1String("--help") ? 0 : 2;
-    }
-    try {
-        return commands.at(args[1]).first(args.mid(1));
-    } catch (const CliError& e) {
-        endProgressLine();
-        if (e.exitCode != 0)
-            std::fprintf(stderr, "driftlab-cli %s: %s\n", qPrintable(args[1]), e.what());
-        return e.exitCode;
-    }
+    return dispatch(app.arguments().mid(1));
 }

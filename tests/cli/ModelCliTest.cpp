@@ -47,7 +47,12 @@ TEST(ModelCli, fitJsonHasParametersWithSigmaAndTheHeldOutScore) {
     const QJsonObject cNut = fit[QStringLiteral("parameters")][QStringLiteral("c_nut")].toObject();
     EXPECT_NEAR(cNut[QStringLiteral("value")].toDouble(), 0.11, 0.011);
     EXPECT_GT(cNut[QStringLiteral("sigma")].toDouble(), 0);
+    EXPECT_EQ(fit[QStringLiteral("score_kind")].toString(), QStringLiteral("held_out"));
     const QJsonObject test = fit[QStringLiteral("test")].toObject();
+    EXPECT_EQ(fit[QStringLiteral("score")][QStringLiteral("runs")].toArray(),
+              QJsonArray({"S4", "S5"}));
+    EXPECT_EQ(fit[QStringLiteral("score")][QStringLiteral("rms_um")].toDouble(),
+              test[QStringLiteral("rms_um")].toDouble());
     EXPECT_GT(test[QStringLiteral("reduction")].toDouble(), 0.9);
     EXPECT_LT(test[QStringLiteral("rms_um")].toDouble(),
               test[QStringLiteral("peak_um")].toDouble());
@@ -83,6 +88,8 @@ TEST(ModelCli, compareGivesTheCrossStateMatrixOfEveryModel) {
     ASSERT_EQ(r.exitCode, 0) << r.err.constData();
     const QJsonObject cmp = json(r);
     EXPECT_EQ(cmp[QStringLiteral("runs")].toArray(), QJsonArray({"S1", "S4", "S5"}));
+    EXPECT_EQ(cmp[QStringLiteral("diagonal")].toString(),
+              QStringLiteral("training score (fitted and scored on the same run)"));
     const QJsonObject models = cmp[QStringLiteral("models")].toObject();
     EXPECT_EQ(models.keys(),
               QStringList({"exponential", "heat-transfer", "mlr", "poly-position", "sensorless"}));
@@ -96,6 +103,22 @@ TEST(ModelCli, compareGivesTheCrossStateMatrixOfEveryModel) {
     const double physics =
         models[QStringLiteral("heat-transfer")][QStringLiteral("rms_um")][0][1].toDouble();
     EXPECT_GT(mlr, 3 * physics);
+}
+
+TEST(ModelCli, fitTextSaysTheScoreIsHeldOutAndOnWhichRuns) {
+    CliResult r = runCli({QStringLiteral("fit"), simulatedBundle(), QStringLiteral("--model"),
+                          QStringLiteral("mlr"), QStringLiteral("--test"), QStringLiteral("S4")});
+    ASSERT_EQ(r.exitCode, 0) << r.err.constData();
+    // Only --test: the training run is the first that is not a test run.
+    EXPECT_TRUE(r.out.trimmed().split('\n').last().startsWith(
+        "held-out score on S4 (runs the fit has not seen): RMS "))
+        << r.out.constData();
+    CliResult json = runCli({QStringLiteral("fit"), simulatedBundle(), QStringLiteral("--model"),
+                             QStringLiteral("mlr"), QStringLiteral("--test"), QStringLiteral("S1"),
+                             QStringLiteral("--json")});
+    ASSERT_EQ(json.exitCode, 0) << json.err.constData();
+    EXPECT_EQ(QJsonDocument::fromJson(json.out).object()[QStringLiteral("train_runs")].toArray(),
+              QJsonArray({"S4"}));
 }
 
 TEST(ModelCli, driftChannelOfTheSpindleRunIsATarget) {

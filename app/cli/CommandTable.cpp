@@ -1,0 +1,143 @@
+#include "app/cli/CommandTable.h"
+
+#include <algorithm>
+
+namespace driftlab::cli {
+
+int importCommand(const QStringList& args);
+int exportCommand(const QStringList& args);
+int infoCommand(const QStringList& args);
+int simulateCommand(const QStringList& args);
+int fitCommand(const QStringList& args);
+int compareCommand(const QStringList& args);
+int diagnoseCommand(const QStringList& args);
+int benchCommand(const QStringList& args);
+
+namespace {
+
+/// Levenshtein distance: how many letters to insert, delete or change.
+int editDistance(const QString& a, const QString& b) {
+    std::vector<int> previous(b.size() + 1), current(b.size() + 1);
+    for (int j = 0; j <= b.size(); ++j) previous[j] = j;
+    for (int i = 1; i <= a.size(); ++i) {
+        current[0] = i;
+        for (int j = 1; j <= b.size(); ++j)
+            current[j] = std::min({previous[j] + 1, current[j - 1] + 1,
+                                   previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        std::swap(previous, current);
+    }
+    return previous[b.size()];
+}
+
+/// `text` in lines of at most `width` characters, each indented by `indent`.
+QString wrapped(const QString& text, int indent, int width) {
+    QString out, line;
+    const QString margin(indent, QLatin1Char(' '));
+    for (const QString& word : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        if (!line.isEmpty() && indent + line.size() + 1 + word.size() > width) {
+            out += margin + line + QLatin1Char('\n');
+            line.clear();
+        }
+        line += (line.isEmpty() ? QString() : QStringLiteral(" ")) + word;
+    }
+    if (!line.isEmpty()) out += margin + line + QLatin1Char('\n');
+    return out;
+}
+
+}  // namespace
+
+const std::vector<Command>& commands() {
+    static const std::vector<Command> table{
+        {QStringLiteral("import"), importCommand, QStringLiteral("import BUNDLE --db FILE"),
+         QStringLiteral("Store a campaign bundle in the database (one transaction); "
+                        "prints the campaign id.")},
+        {QStringLiteral("export"), exportCommand,
+         QStringLiteral("export --db FILE --campaign ID --out DIR"),
+         QStringLiteral("Write a campaign of the database back as a bundle, lossless.")},
+        {QStringLiteral("info"), infoCommand, QStringLiteral("info BUNDLE"),
+         QStringLiteral("Runs, channels, sample and measurement counts of a campaign.")},
+        {QStringLiteral("simulate"), simulateCommand,
+         QStringLiteral("simulate --out DIR [--effect ID=VALUE]... [--seed N]"),
+         QStringLiteral("A campaign from the simulated rig, five moving states by default.")},
+        {QStringLiteral("fit"), fitCommand,
+         QStringLiteral("fit BUNDLE --model NAME [--train R,..] [--test R,..] [--target CH]"),
+         QStringLiteral("Fit one thermal-error model and score it on held-out runs.")},
+        {QStringLiteral("compare"), compareCommand, QStringLiteral("compare BUNDLE"),
+         QStringLiteral("Every model, as a cross-state matrix (fitted on one run, scored on "
+                        "each).")},
+        {QStringLiteral("diagnose"), diagnoseCommand,
+         QStringLiteral("diagnose BUNDLE [--train R,.. --test R,..]"),
+         QStringLiteral("What the physical model misses, the likely cause and the gain of "
+                        "modelling it.")},
+        {QStringLiteral("iso230-2"), nullptr, QStringLiteral("iso230-2 CSV"),
+         QStringLiteral("ISO 230-2 evaluation of target_mm,direction,cycle,deviation_um rows.")},
+        {QStringLiteral("compensate"), nullptr,
+         QStringLiteral("compensate BUNDLE --format F --out FILE"),
+         QStringLiteral("A compensation table for a controller, or pushed over Modbus.")},
+        {QStringLiteral("run"), nullptr,
+         QStringLiteral("run --procedure FILE --rig sim|modbus://HOST:PORT --db FILE"),
+         QStringLiteral("Run a test procedure on a rig and log it.")},
+        {QStringLiteral("report"), nullptr, QStringLiteral("report BUNDLE --pdf FILE"),
+         QStringLiteral("The acceptance report (PDF, HTML).")},
+        {QStringLiteral("batch"), nullptr, QStringLiteral("batch PATH..."),
+         QStringLiteral("Analyse many bundles or databases, one JSON line each.")},
+        {QStringLiteral("bench"), benchCommand, QStringLiteral("bench [--json]"),
+         QStringLiteral("The performance figures of DESIGN.md section 10, measured on this "
+                        "machine.")},
+    };
+    return table;
+}
+
+const Command* findCommand(const QString& name) {
+    for (const Command& command : commands())
+        if (command.name == name) return &command;
+    return nullptr;
+}
+
+QString closestCommand(const QString& name) {
+    // A unique prefix ("diag") is what was meant; so is a name one or two
+    // typos away, as long as the typos do not make up most of the word.
+    QStringList prefixed;
+    for (const Command& command : commands())
+        if (name.size() >= 2 && command.name.startsWith(name)) prefixed << command.name;
+    if (prefixed.size() == 1) return prefixed.front();
+    QString best;
+    int bestDistance = std::min<int>(2, (name.size() - 1) / 2) + 1;
+    for (const Command& command : commands()) {
+        const int d = editDistance(name.toLower(), command.name);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = command.name;
+        }
+    }
+    return best;
+}
+
+QString notBuiltReason() {
+    return QStringLiteral("not built yet in DriftLab %1").arg(QStringLiteral(DRIFTLAB_VERSION));
+}
+
+QString usageText() {
+    QString text = QStringLiteral(
+        "Usage: driftlab-cli COMMAND [options]\n"
+        "       driftlab-cli help COMMAND    the options of COMMAND (or COMMAND --help)\n"
+        "       driftlab-cli --version\n"
+        "\n"
+        "Commands:\n");
+    // The synopsis on its own line, what it does below it: synopses are too
+    // long for two columns in a terminal of 80.
+    for (const Command& command : commands())
+        text += QStringLiteral("  %1%2\n")
+                    .arg(command.synopsis,
+                         command.run ? QString() : QStringLiteral("   (not built yet)")) +
+                wrapped(command.summary, 6, 79);
+    text += QStringLiteral(
+        "\n"
+        "Wherever a BUNDLE is taken, --db FILE --campaign ID may be given instead.\n"
+        "Progress goes to stderr, results to stdout (--json for scripts).\n"
+        "Exit codes: 0 done, 1 failed (last stderr line says why), 2 usage error,\n"
+        "            3 command not built yet in this version.\n");
+    return text;
+}
+
+}  // namespace driftlab::cli
