@@ -48,10 +48,15 @@ run_main_job() {
     rm -rf "$out" && mkdir -p "$out"
     log "main job 1/6: simulating a five-state campaign on the built-in rig"
     "$cli" simulate --out "$out/campaign" --plots "$out/plots" --spindle --seed 1 >/dev/null
-    log "main job 2/6: importing it into $out/driftlab.sqlite (one transaction)"
+    log "main job 2/6: zipping the bundle as a user mails it, importing the zip into $out/driftlab.sqlite (checked, then one transaction)"
+    (cd "$out" && zip -qr campaign.zip campaign)
     local id
-    id=$("$cli" import "$out/campaign" --db "$out/driftlab.sqlite")
+    id=$("$cli" import "$out/campaign.zip" --db "$out/driftlab.sqlite")
     "$cli" info --db "$out/driftlab.sqlite" --campaign "$id"
+    if "$cli" import "$out/campaign" --db "$out/driftlab.sqlite" >/dev/null 2>"$out/again.err"; then
+        log "the same campaign imported twice went unnoticed"; return 1
+    fi
+    log "the unzipped folder is the same content: $(tail -n 1 "$out/again.err")"
     log "main job 3/6: heat-transfer model identified on S1, tested on S2-S5 (stored in the database)"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model heat-transfer --train S1
     log "main job 4/6: the same with the best temperature regression (mlr)"
@@ -63,7 +68,8 @@ run_main_job() {
     local hidden
     hidden=$("$cli" import "$out/hidden" --db "$out/driftlab.sqlite")
     "$cli" diagnose --db "$out/driftlab.sqlite" --campaign "$hidden" --plots "$out/plots/diagnosis"
-    log "done: bundle $out/campaign, database $out/driftlab.sqlite, plots in $out/plots"
+    "$cli" export --db "$out/driftlab.sqlite" --campaign "$id" --out "$out/exported" >/dev/null
+    log "done: bundle $out/campaign (and .zip), database $out/driftlab.sqlite, exported back to $out/exported, plots in $out/plots"
 }
 
 run_tests() {

@@ -17,6 +17,10 @@
 #include "core/rig/CampaignSimulator.h"
 
 namespace driftlab::cli {
+
+/// ImportThroughput.cpp: `import` of a samples.csv of `megabytes` MB in a child process.
+QJsonObject importFigures(int megabytes, int repetitions);
+
 namespace {
 
 double median(std::vector<double> v) {
@@ -109,8 +113,16 @@ int benchCommand(const QStringList& args) {
                                     QStringLiteral("N"), QStringLiteral("5")};
     const QCommandLineOption noPython{QStringLiteral("no-python"),
                                       QStringLiteral("Skip the SciPy comparison.")};
-    parseArguments(parser, args, {repeat, noPython});
+    const QCommandLineOption importMb{
+        QStringLiteral("import-mb"),
+        QStringLiteral("Size of the samples.csv the import figure uses, MB (0: skip)."),
+        QStringLiteral("MB"), QStringLiteral("200")};
+    parseArguments(parser, args, {repeat, noPython, importMb});
     const int repetitions = std::max(1, parser.value(repeat).toInt());
+    // First, while no other child has raised this process's memory high-water marks.
+    const int megabytes = parser.value(importMb).toInt();
+    const QJsonObject import =
+        megabytes > 0 ? importFigures(megabytes, std::min(repetitions, 3)) : QJsonObject();
 
     printProgress(QStringLiteral("simulation"), 0);
     const physics::SimulationThroughput sim = physics::measureSimulationThroughput(repetitions);
@@ -122,6 +134,7 @@ int benchCommand(const QStringList& args) {
     for (auto it = identification.begin(); it != identification.end(); ++it)
         figures[it.key()] = it.value();
     figures[QStringLiteral("diagnosis_s")] = diagnosisSeconds();
+    for (auto it = import.begin(); it != import.end(); ++it) figures[it.key()] = it.value();
     if (!parser.isSet(noPython)) {
         printProgress(QStringLiteral("scipy comparison"), 0);
         const QJsonObject scipy = scipyFigures();
@@ -158,6 +171,16 @@ int benchCommand(const QStringList& args) {
     printLine(
         QStringLiteral("diagnosis       full candidate library on 5 runs: %1 s (target < 20 s)")
             .arg(figures[QStringLiteral("diagnosis_s")].toDouble(), 0, 'f', 1));
+    if (!import.isEmpty())
+        printLine(
+            QStringLiteral("import          %1 MB samples.csv, %2 million samples: %3 million "
+                           "samples/s, peak memory %4 MB = %5 × the file (target ≥ 1.5 "
+                           "million, ≤ 1.5 ×)")
+                .arg(import[QStringLiteral("import_csv_mb")].toDouble(), 0, 'f', 0)
+                .arg(import[QStringLiteral("import_samples")].toDouble() / 1e6, 0, 'f', 1)
+                .arg(import[QStringLiteral("import_samples_per_s")].toDouble() / 1e6, 0, 'f', 2)
+                .arg(import[QStringLiteral("import_peak_rss_mb")].toDouble(), 0, 'f', 0)
+                .arg(import[QStringLiteral("import_peak_memory_ratio")].toDouble(), 0, 'f', 2));
     return 0;
 }
 

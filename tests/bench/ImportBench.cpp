@@ -1,10 +1,11 @@
-// Import throughput: a one-million-sample bundle read from disk and stored in
-// one SQLite transaction (what `driftlab-cli import` does).
+// Import throughput: a one-million-sample bundle checked, then streamed from
+// disk into one SQLite transaction (what `driftlab-cli import` does).
 #include <benchmark/benchmark.h>
 #include <QTemporaryDir>
 
 #include "core/bundle/BundleReader.h"
 #include "core/bundle/BundleWriter.h"
+#include "db/CampaignImport.h"
 #include "db/CampaignStore.h"
 #include "tests/core/BundleTestSupport.h"
 
@@ -16,12 +17,13 @@ static void BM_ImportMillionSampleBundle(benchmark::State& state) {
     writeBundle(test::generatedCampaign(125'000), bundle);  // 8 columns -> 1e6 samples
     int round = 0;
     for (auto _ : state) {
-        BundleReadResult read = readBundle(bundle);
         QString error;
+        const auto source = openBundleFolder(bundle, &error);
+        const db::BundleCheck checked = db::checkBundle(*source);
         auto store =
             db::CampaignStore::open(dir.filePath(QStringLiteral("lab%1.sqlite").arg(round++)),
                                     db::StoreAccess::CreateIfMissing, &error);
-        if (!read.ok() || !store || !store->importCampaign(*read.campaign, &error) ||
+        if (!checked.ok() || !store || !db::importBundle(*store, *source, checked).campaignId ||
             !store->publish(&error))
             state.SkipWithError("import failed");
     }
