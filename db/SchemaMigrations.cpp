@@ -49,7 +49,7 @@ int latestSchemaVersion() {
 }
 
 int oldestReadableSchemaVersion() {
-    return 1;
+    return 3;
 }
 
 int schemaVersion(QSqlDatabase& db) {

@@ -11,10 +11,9 @@ namespace driftlab::db {
 
 /// The schema version this build writes.
 int latestSchemaVersion();
-/// The oldest schema a read-only connection reads without migrating: the
-/// campaign data (campaign, machine, screw, channel, run, sample, motion,
-/// positioning) is read the same way since v1; v2 only added derived tables and
-/// run.status, which has a default. Older stores must be opened for writing once.
+/// The oldest schema a read-only connection reads without migrating: v3, where
+/// samples moved into blocks (sample_block) and campaigns got their content
+/// hash. Older stores must be opened for writing once, which migrates them.
 int oldestReadableSchemaVersion();
 /// PRAGMA user_version of an open database.
 int schemaVersion(QSqlDatabase& db);

@@ -106,6 +106,7 @@ TEST_P(CliBadBundle, importFailsWithOneLineAndLeavesTheDatabaseByteForByteUnchan
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_TRUE(r.out.isEmpty()) << r.out.constData();
     const QByteArray line = reason(r.err);
+    RecordProperty("message", line.toStdString());  // the table of messages (--gtest_output=json)
     EXPECT_TRUE(
         line.startsWith("driftlab-cli import: " + bundle.toUtf8() + '/' + bad.expectedLocation))
         << line.constData();

@@ -4,6 +4,7 @@
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QTemporaryDir>
+#include <cmath>
 
 #include "core/bundle/BundleReader.h"
 #include "db/CampaignStore.h"
@@ -95,4 +96,74 @@ TEST(SchemaMigration, aDatabaseFromANewerBuildIsRefusedNotDamaged) {
                                     .arg(db::latestSchemaVersion()));
     }
     EXPECT_EQ(test::sha256OfFile(path), before);
+}
+
+// Schema v3 moved samples from a row per value into blocks: the whole example
+// campaign, stored as v2 stored it (rows written here with plain SQL, missing
+// samples without a row), comes back value for value after the migration.
+TEST(SchemaMigration, aSchemaV2StoreKeepsEverySampleWhenItsRowsMoveIntoBlocks) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("v2.sqlite"));
+    BundleReadResult example = readBundle(test::exampleBundlePath());
+    ASSERT_TRUE(example.ok());
+    const Campaign& c = *example.campaign;
+    {
+        QSqlDatabase db =
+            QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("v2-writer"));
+        db.setDatabaseName(path);
+        ASSERT_TRUE(db.open());
+        QString error;
+        ASSERT_TRUE(db::migrate(db, &error, 2)) << qPrintable(error);
+        QSqlQuery q(db);
+        ASSERT_TRUE(db.transaction());
+        ASSERT_TRUE(q.exec(QStringLiteral(
+            "INSERT INTO campaign (id, name, nut_length_mm, travel_from_mm, travel_to_mm) "
+            "VALUES (1, 'v2 campaign', 80, 0, 700)")));
+        ASSERT_TRUE(q.exec(QStringLiteral("INSERT INTO machine VALUES (1, 'm', 'X', '', '{}')")));
+        // Channels in column order; ids 1.. are the column ordinals + 1.
+        for (std::size_t k = 0; k < c.sample_columns.size(); ++k)
+            ASSERT_TRUE(q.exec(QStringLiteral("INSERT INTO channel (id, campaign_id, name, "
+                                              "quantity, declared_ordinal, column_ordinal) VALUES "
+                                              "(%1, 1, '%2', 'temperature', %3, %3)")
+                                   .arg(k + 1)
+                                   .arg(c.sample_columns[k])
+                                   .arg(k)))
+                << qPrintable(q.lastError().text());
+        q.prepare(QStringLiteral("INSERT INTO sample VALUES (?, ?, ?, ?)"));
+        for (std::size_t r = 0; r < c.runs.size(); ++r) {
+            ASSERT_TRUE(QSqlQuery(db).exec(
+                QStringLiteral("INSERT INTO run (id, campaign_id, name, ordinal, kind) VALUES "
+                               "(%1, 1, '%2', %3, 'moving')")
+                    .arg(r + 1)
+                    .arg(c.runs[r].id)
+                    .arg(r)));
+            const SampleSeries& s = c.runs[r].samples;
+            for (std::size_t i = 0; i < s.rowCount(); ++i)
+                for (std::size_t k = 0; k < s.values.size(); ++k) {
+                    if (std::isnan(s.values[k][i])) continue;
+                    q.addBindValue(qint64(r + 1));
+                    q.addBindValue(s.time_s[i]);
+                    q.addBindValue(qint64(k + 1));
+                    q.addBindValue(s.values[k][i]);
+                    ASSERT_TRUE(q.exec()) << qPrintable(q.lastError().text());
+                }
+        }
+        ASSERT_TRUE(db.commit());
+        db.close();
+        db = QSqlDatabase();
+        QSqlDatabase::removeDatabase(QStringLiteral("v2-writer"));
+    }
+
+    QString error;
+    auto store = CampaignStore::open(path, db::StoreAccess::ReadWrite, &error);
+    ASSERT_TRUE(store) << qPrintable(error);
+    EXPECT_EQ(db::schemaVersion(store->database()), db::latestSchemaVersion());
+    auto migrated = store->loadCampaign(1, &error);
+    ASSERT_TRUE(migrated) << qPrintable(error);
+    ASSERT_EQ(migrated->runs.size(), c.runs.size());
+    for (std::size_t r = 0; r < c.runs.size(); ++r)
+        EXPECT_EQ(migrated->runs[r].samples, c.runs[r].samples) << qPrintable(c.runs[r].id);
+    QSqlQuery gone(store->database());
+    EXPECT_FALSE(gone.exec(QStringLiteral("SELECT count(*) FROM sample")))
+        << "the per-value table is dropped";
 }

@@ -221,25 +221,31 @@ TEST(StoreSafety, aReaderWhileAWriterIsOpenSeesWhatItCommits) {
 
 TEST(StoreSafety, aReadOnlyOpenNeverMigrates) {
     QTemporaryDir dir;
-    // Schema v1 (a store of an older build): read as it is, not migrated.
-    const QString v1 = dir.filePath(QStringLiteral("v1.sqlite"));
+    // Schema v3, the oldest a reader reads (samples in blocks): read as it is.
+    const QString v3 = dir.filePath(QStringLiteral("v3.sqlite"));
     {
         QString error;
-        auto store = CampaignStore::open(v1, StoreAccess::CreateIfMissing, &error);
+        auto store = CampaignStore::open(v3, StoreAccess::CreateIfMissing, &error);
         ASSERT_TRUE(store) << qPrintable(error);
         ASSERT_TRUE(store->importCampaign(exampleCampaign(), &error)) << qPrintable(error);
         ASSERT_TRUE(store->publish(&error)) << qPrintable(error);
     }
-    rawSql(v1, {QStringLiteral("PRAGMA user_version = 1")});
-    const QByteArray before = sha256OfFile(v1);
+    rawSql(v3, {QStringLiteral("PRAGMA user_version = 3")});
+    const QByteArray before = sha256OfFile(v3);
     QString error;
     {
-        auto store = CampaignStore::open(v1, StoreAccess::ReadOnly, &error);
+        auto store = CampaignStore::open(v3, StoreAccess::ReadOnly, &error);
         ASSERT_TRUE(store) << qPrintable(error);
-        EXPECT_EQ(db::schemaVersion(store->database()), 1);
+        EXPECT_EQ(db::schemaVersion(store->database()), 3);
         EXPECT_TRUE(store->loadCampaign(1, &error)) << qPrintable(error);
     }
-    EXPECT_EQ(sha256OfFile(v1), before);
+    EXPECT_EQ(sha256OfFile(v3), before);
+
+    // Schema v2 (samples a row per value): a reader does not migrate it.
+    rawSql(v3, {QStringLiteral("PRAGMA user_version = 2")});
+    EXPECT_FALSE(CampaignStore::open(v3, StoreAccess::ReadOnly, &error));
+    EXPECT_EQ(error, v3 + QStringLiteral(
+                              ": store schema v2 is older; open it once for writing to migrate"));
 
     // Schema v0 with DriftLab's mark: nothing to read until migrated.
     const QString v0 = dir.filePath(QStringLiteral("v0.sqlite"));
