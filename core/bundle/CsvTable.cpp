@@ -1,6 +1,7 @@
 #include "core/bundle/CsvTable.h"
 
 #include <csv.h>
+#include <QHash>
 #include <QIODevice>
 #include <charconv>
 #include <cmath>
@@ -26,7 +27,7 @@ QString quoted(std::string_view s) {
 }  // namespace
 
 CsvTable::CsvTable(std::unique_ptr<QIODevice> device, const QString& displayName)
-    : m_fileName(displayName), m_device(std::move(device)), m_parser(new csv_parser) {
+    : m_fileName(displayName), m_device(std::move(device)), m_parser(new csv_parser()) {
     // Strict: a quote inside an unquoted field or an unclosed quote is an error,
     // not a silently merged cell.
     if (csv_init(m_parser.get(), CSV_STRICT | CSV_STRICT_FINI) != 0)
@@ -34,21 +35,27 @@ CsvTable::CsvTable(std::unique_ptr<QIODevice> device, const QString& displayName
     if (!readRecord())
         throw BundleException(
             {m_fileName, 0, 0, QStringLiteral("missing header line (file is empty)")});
+    // A hash, not a scan of the columns before: a header of 100 000 columns
+    // would otherwise take half a minute to check.
+    QHash<QString, int> columnOf;
     for (std::size_t i = 0; i < m_ends.size(); ++i) {
         std::string_view cell = field(int(i));
         QString name = QString::fromUtf8(cell.data(), qsizetype(cell.size()));
         if (name.isEmpty()) fail(int(i), QStringLiteral("empty column name in header"));
-        for (std::size_t j = 0; j < i; ++j)
-            if (m_header[j] == name)
-                fail(int(i), QStringLiteral("duplicate column '%1' in header (also column %2)")
-                                 .arg(name)
-                                 .arg(j + 1));
+        if (auto it = columnOf.constFind(name); it != columnOf.cend())
+            fail(int(i), QStringLiteral("duplicate column '%1' in header (also column %2)")
+                             .arg(name)
+                             .arg(*it + 1));
+        columnOf.insert(name, int(i));
         m_header.push_back(name);
     }
 }
 
-CsvTable::~CsvTable() {
-    csv_free(m_parser.get());
+CsvTable::~CsvTable() = default;
+
+void CsvTable::ParserDeleter::operator()(csv_parser* parser) const {
+    csv_free(parser);  // its field buffer (a destructor does not run when a constructor throws)
+    delete parser;
 }
 
 int CsvTable::column(const QString& name) const {

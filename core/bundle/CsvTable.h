@@ -65,9 +65,14 @@ private:
     bool feedLine();
     void detectDelimiter(std::string_view firstLine);
 
+    /// csv_free()s the parser's buffer too, also when the constructor throws.
+    struct ParserDeleter {
+        void operator()(csv_parser* parser) const;
+    };
+
     QString m_fileName;
     std::unique_ptr<QIODevice> m_device;
-    std::unique_ptr<csv_parser> m_parser;
+    std::unique_ptr<csv_parser, ParserDeleter> m_parser;
     char m_delimiter = ',';
 
     std::string m_chunk;  ///< bytes read but not yet fed

@@ -1,0 +1,29 @@
+// libFuzzer target: the input is a campaign.json. A BundleException is the
+// expected answer to bad input; a parsed campaign is written back to JSON and
+// must read again (the writer keeps unknown keys, so the round trip is lossless).
+#include <QJsonDocument>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+
+#include "core/bundle/BundleError.h"
+#include "core/bundle/CampaignJson.h"
+
+using driftlab::BundleException;
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const QByteArray json(reinterpret_cast<const char*>(data), qsizetype(size));
+    driftlab::Campaign campaign;
+    try {
+        campaign = driftlab::campaignFromJson(json, QStringLiteral("campaign.json"));
+    } catch (const BundleException&) {
+        return 0;
+    }
+    const QByteArray written = QJsonDocument(driftlab::campaignToJson(campaign)).toJson();
+    try {
+        (void)driftlab::campaignFromJson(written, QStringLiteral("campaign.json"));
+    } catch (const BundleException&) {
+        std::abort();  // a campaign we accepted must survive its own export
+    }
+    return 0;
+}
