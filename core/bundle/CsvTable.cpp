@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 namespace driftlab {
 namespace {
@@ -32,6 +33,9 @@ CsvTable::CsvTable(std::unique_ptr<QIODevice> device, const QString& displayName
     // not a silently merged cell.
     if (csv_init(m_parser.get(), CSV_STRICT | CSV_STRICT_FINI) != 0)
         throw BundleException({m_fileName, 0, 0, QStringLiteral("cannot start the CSV parser")});
+    // libcsv grows a field's buffer by this much at a time (128 bytes by
+    // default: a megabyte-long cell would be copied thousands of times).
+    csv_set_blk_size(m_parser.get(), 64 * 1024);
     if (!readRecord())
         throw BundleException(
             {m_fileName, 0, 0, QStringLiteral("missing header line (file is empty)")});
@@ -49,6 +53,8 @@ CsvTable::CsvTable(std::unique_ptr<QIODevice> device, const QString& displayName
         columnOf.insert(name, int(i));
         m_header.push_back(name);
     }
+    // A record with more fields is wrong whatever they hold: stop keeping them.
+    m_fieldLimit = m_header.size() + 1;
 }
 
 CsvTable::~CsvTable() = default;
@@ -83,6 +89,12 @@ double CsvTable::progress() const {
 }
 
 void CsvTable::appendField(const char* data, std::size_t size) {
+    // libcsv calls this from C: no exception may cross it, so an overlong
+    // record is only counted here and refused by next().
+    if (m_buildEnds.size() >= m_fieldLimit) {
+        ++m_droppedFields;
+        return;
+    }
     m_buildText.append(data, size);
     m_buildEnds.push_back(m_buildText.size());
 }
@@ -90,6 +102,7 @@ void CsvTable::appendField(const char* data, std::size_t size) {
 void CsvTable::endRecord() {
     m_text.swap(m_buildText);
     m_ends.swap(m_buildEnds);
+    m_recordFields = m_ends.size() + std::exchange(m_droppedFields, 0);
     m_buildText.clear();
     m_buildEnds.clear();
     m_recordReady = true;
@@ -155,13 +168,13 @@ bool CsvTable::readRecord() {
 bool CsvTable::next() {
     while (readRecord()) {
         if (m_ends.size() == 1 && m_ends[0] == 0) continue;  // a line of spaces
-        if (m_ends.size() != m_header.size())
+        if (m_recordFields != m_header.size())
             fail(int(std::min(m_ends.size(), m_header.size())),
                  QStringLiteral("expected %1 fields as in the header, found %2%3")
                      .arg(m_header.size())
-                     .arg(m_ends.size())
-                     .arg(m_ends.size() < m_header.size() ? QStringLiteral(" (truncated line?)")
-                                                          : QString()));
+                     .arg(m_recordFields)
+                     .arg(m_recordFields < m_header.size() ? QStringLiteral(" (truncated line?)")
+                                                           : QString()));
         return true;
     }
     return false;

@@ -85,6 +85,9 @@ private:
     std::string m_buildText, m_text;
     std::vector<std::size_t> m_buildEnds, m_ends;
     bool m_recordReady = false;
+    std::size_t m_recordFields = 0;      ///< fields of the current record, kept or not
+    std::size_t m_fieldLimit = 100'000;  ///< fields kept per record: the header's count + 1
+    std::size_t m_droppedFields = 0;
     int m_recordLine = 0;
 
     std::vector<QString> m_header;

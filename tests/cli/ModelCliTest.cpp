@@ -154,9 +154,8 @@ TEST(BenchCli, jsonCarriesTheFiguresOfDesignSection10) {
     ASSERT_EQ(r.exitCode, 0) << r.err.constData();
     const QJsonObject figures = json(r);
     // Figures, not verdicts: speed is judged by reading them, never by a test.
-    for (const char* key :
-         {"simulation_cell_steps_per_s", "identification_s", "online_step_us", "diagnosis_s",
-          "import_samples_per_s", "import_peak_rss_mb"})
+    for (const char* key : {"simulation_cell_steps_per_s", "identification_s", "online_step_us",
+                            "diagnosis_s", "import_samples_per_s", "import_peak_rss_mb"})
         EXPECT_GT(figures[QLatin1String(key)].toDouble(), 0) << key;
     // The import figure really imported the file it wrote: 4 MB of 11-column rows.
     EXPECT_GT(figures[QStringLiteral("import_samples")].toDouble(), 300'000);

@@ -249,6 +249,13 @@ const std::vector<BadBundleCase>& badBundleCases() {
              writeFile(file(d, "samples.csv"), csv + "S1,3700,\"20.5,20,20,20,20,20\n");
          },
          "samples.csv:544:3", "unterminated quoted field"},
+        // Found by fuzzing: a record's fields beyond the header's are not kept.
+        {"a_million_commas_in_one_row",
+         [=](const QString& d) {
+             QByteArray csv = readFile(file(d, "samples.csv"));
+             writeFile(file(d, "samples.csv"), csv + "S1,3700" + QByteArray(1'000'000, ',') + "\n");
+         },
+         "samples.csv:544:19", "expected 18 fields as in the header, found 1000002"},
         {"decimal_comma_in_a_comma_separated_file",
          [=](const QString& d) {
              replaceInFile(file(d, "samples.csv"), "\nS1,10,20.06,", "\nS1,10,\"20,06\",");
