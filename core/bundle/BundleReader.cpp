@@ -45,6 +45,7 @@ public:
         readSamples();
         if (m_source.contains(kMotionFile)) readMotion();
         if (m_source.contains(kPositioningFile)) readPositioning();
+        if (m_options.progress) m_options.progress(1.0);
         return std::move(m_campaign);
     }
 
