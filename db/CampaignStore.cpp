@@ -1,6 +1,11 @@
 #include "db/CampaignStore.h"
 
+#include <signal.h>
+#include <unistd.h>
+#include <cerrno>
+
 #include <QAtomicInteger>
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QSqlError>
@@ -67,12 +72,29 @@ void removeWithSideFiles(const QString& path) {
         QFile::remove(path + QLatin1String(suffix));
 }
 
+/// Removes `.NAME.<pid>-XXXXXX.new` stores (with their -wal/-shm) beside the
+/// target whose process no longer runs: an import killed before it published.
+void sweepPartialStoresOfDeadImports(const QFileInfo& target) {
+    const QString prefix = QStringLiteral(".") + target.fileName() + QLatin1Char('.');
+    const QDir folder = target.absoluteDir();
+    for (const QString& name :
+         folder.entryList({prefix + QStringLiteral("*.new")}, QDir::Files | QDir::Hidden)) {
+        bool ok = false;
+        const qint64 pid = name.mid(prefix.size()).section(QLatin1Char('-'), 0, 0).toLongLong(&ok);
+        if (ok && pid > 0 && kill(pid_t(pid), 0) != 0 && errno == ESRCH)
+            removeWithSideFiles(folder.filePath(name));
+    }
+}
+
 /// A new, empty file beside `path` to build a new store in: renamed into place
 /// only once complete, so a failed import leaves nothing at `path`.
+/// Its name carries the creator's pid, so that the partial store of an import
+/// that was killed (power cut, OOM killer) is recognised and swept by the next.
 QString reserveTemporaryFile(const QString& path, QString* why) {
     const QFileInfo target(path);
+    sweepPartialStoresOfDeadImports(target);
     QTemporaryFile file(target.absolutePath() + QStringLiteral("/.") + target.fileName() +
-                        QStringLiteral(".XXXXXX.new"));
+                        QStringLiteral(".%1-XXXXXX.new").arg(getpid()));
     file.setAutoRemove(false);
     if (!file.open()) {
         *why = QStringLiteral("cannot create a store there (%1)").arg(file.errorString());
