@@ -12,6 +12,7 @@ int fitCommand(const QStringList& args);
 int compareCommand(const QStringList& args);
 int diagnoseCommand(const QStringList& args);
 int benchCommand(const QStringList& args);
+int iso230Command(const QStringList& args);
 
 namespace {
 
@@ -69,8 +70,11 @@ const std::vector<Command>& commands() {
          QStringLiteral("diagnose BUNDLE [--train R,.. --test R,..]"),
          QStringLiteral("What the physical model misses, the likely cause and the gain of "
                         "modelling it.")},
-        {QStringLiteral("iso230-2"), nullptr, QStringLiteral("iso230-2 CSV"),
-         QStringLiteral("ISO 230-2 evaluation of target_mm,direction,cycle,deviation_um rows.")},
+        {QStringLiteral("iso230-2"), iso230Command,
+         QStringLiteral("iso230-2 CSV [--edition 2014|2006|1997] [--run R]"),
+         QStringLiteral("ISO 230-2 evaluation of target_mm,direction,cycle,deviation_um rows "
+                        "(a CSV file, or a run of a campaign): accuracy, repeatability, "
+                        "reversal per target and for the axis.")},
         {QStringLiteral("compensate"), nullptr,
          QStringLiteral("compensate BUNDLE --format F --out FILE"),
          QStringLiteral("A compensation table for a controller, or pushed over Modbus.")},

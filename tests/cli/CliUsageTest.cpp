@@ -15,9 +15,9 @@ using namespace driftlab::test;
 
 namespace {
 
-const QStringList kNotBuilt{"iso230-2", "compensate", "run", "report", "batch"};
-const QStringList kBuilt{"import", "export",  "info",     "simulate",
-                         "fit",    "compare", "diagnose", "bench"};
+const QStringList kNotBuilt{"compensate", "run", "report", "batch"};
+const QStringList kBuilt{"import",  "export",   "info",     "simulate", "fit",
+                         "compare", "diagnose", "iso230-2", "bench"};
 
 QJsonObject json(const CliResult& r) {
     return QJsonDocument::fromJson(r.out).object();
@@ -63,8 +63,8 @@ TEST(CliUsage, usageMarksCommandsNotBuiltYet) {
         EXPECT_EQ(at->endsWith("   (not built yet)"), kNotBuilt.contains(name)) << at->constData();
     }
     EXPECT_TRUE(
-        usage().contains("\n  iso230-2 CSV   (not built yet)\n      ISO 230-2 evaluation "
-                         "of target_mm,direction,cycle,deviation_um rows.\n"));
+        usage().contains("\n  compensate BUNDLE --format F --out FILE   (not built yet)\n      A "
+                         "compensation table for a controller, or pushed over Modbus.\n"));
 }
 
 TEST(CliUsage, bareCommandLineAsksForACommandOnStderr) {
@@ -158,9 +158,10 @@ TEST(CliUsage, notBuiltCommandSaysSo) {
         EXPECT_EQ(r.err, "driftlab-cli " + name.toUtf8() + ": not built yet in DriftLab " +
                              DRIFTLAB_VERSION + "\n");
     }
-    CliResult help = runCli({QStringLiteral("help"), QStringLiteral("iso230-2")});
+    CliResult help = runCli({QStringLiteral("help"), QStringLiteral("compensate")});
     EXPECT_EQ(help.exitCode, 3);
-    EXPECT_EQ(help.err, "driftlab-cli iso230-2: not built yet in DriftLab " DRIFTLAB_VERSION "\n");
+    EXPECT_EQ(help.err,
+              "driftlab-cli compensate: not built yet in DriftLab " DRIFTLAB_VERSION "\n");
 }
 
 TEST(CliUsage, missingRequiredOptionNamesCommandAndOption) {

@@ -1,0 +1,241 @@
+// iso230-2: ISO 230-2 evaluation of positioning readings from a CSV file or
+// from a run of a campaign (DESIGN.md section 9; docs/iso230.md).
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+
+#include "app/cli/CliCommon.h"
+#include "core/bundle/CsvTable.h"
+#include "core/iso/Iso230_2.h"
+
+namespace driftlab::cli {
+namespace {
+
+/// target_mm,direction,cycle,deviation_um rows, in any column order; other
+/// columns (a bundle's run,time_s) are ignored. Errors name file:line:column.
+std::vector<iso::Reading> readCsv(const QString& path) {
+    auto file = std::make_unique<QFile>(path);
+    if (!file->open(QIODevice::ReadOnly))
+        throw CliError(QStringLiteral("%1: cannot open: %2").arg(path, file->errorString()));
+    std::vector<iso::Reading> readings;
+    try {
+        CsvTable table(std::move(file), path);
+        const int target = table.requireColumn(QStringLiteral("target_mm"));
+        const int direction = table.requireColumn(QStringLiteral("direction"));
+        const int cycle = table.requireColumn(QStringLiteral("cycle"));
+        const int deviation = table.requireColumn(QStringLiteral("deviation_um"));
+        while (table.next()) {
+            const auto d = iso::parseDirection(table.field(direction));
+            if (!d)
+                table.fail(direction, QStringLiteral("direction must be '+' (positive approach, "
+                                                     "↑) or '-' (negative approach, ↓), not '%1'")
+                                          .arg(table.text(direction)));
+            readings.push_back(
+                {table.number(target), *d, table.integer(cycle), table.number(deviation)});
+        }
+        if (readings.empty())
+            throw CliError(path + QStringLiteral(": no readings after the header"));
+    } catch (const BundleException& e) {
+        throw CliError(e.error.toString());
+    }
+    return readings;
+}
+
+/// The run to evaluate: --run, else the one positioning run, else the one run with readings.
+const Run& chooseRun(const Campaign& campaign, const QString& wanted) {
+    QStringList ids, positioning, withReadings;
+    for (const Run& run : campaign.runs) {
+        ids << run.id;
+        if (run.positioning.empty()) continue;
+        withReadings << run.id;
+        if (run.kind == RunKind::Positioning) positioning << run.id;
+    }
+    QString id = wanted;
+    if (id.isEmpty()) {
+        const QStringList& candidates = positioning.isEmpty() ? withReadings : positioning;
+        if (candidates.isEmpty())
+            throw CliError(QStringLiteral("no run of the campaign has positioning readings"));
+        if (candidates.size() > 1)
+            throw CliError(
+                QStringLiteral("runs %1 have positioning readings: choose one with --run")
+                    .arg(candidates.join(QStringLiteral(", "))),
+                2);
+        id = candidates.front();
+    }
+    for (const Run& run : campaign.runs)
+        if (run.id == id) {
+            if (run.positioning.empty())
+                throw CliError(QStringLiteral("run %1 has no positioning readings").arg(id));
+            return run;
+        }
+    throw CliError(QStringLiteral("--run: no run '%1' in the campaign (runs: %2)")
+                       .arg(id, ids.join(QStringLiteral(", "))),
+                   2);
+}
+
+QString um(double value) {
+    return std::isfinite(value) ? QString::number(value, 'f', 3) : QStringLiteral("n/a");
+}
+
+QJsonObject targetJson(const iso::TargetResult& t) {
+    return {{QStringLiteral("target_mm"), t.target_mm},
+            {QStringLiteral("n_up"), t.n_up},
+            {QStringLiteral("n_down"), t.n_down},
+            {QStringLiteral("mean_up"), jsonNumber(t.mean_up_um)},
+            {QStringLiteral("mean_down"), jsonNumber(t.mean_down_um)},
+            {QStringLiteral("mean"), jsonNumber(t.mean_um)},
+            {QStringLiteral("s_up"), jsonNumber(t.s_up_um)},
+            {QStringLiteral("s_down"), jsonNumber(t.s_down_um)},
+            {QStringLiteral("B"), jsonNumber(t.reversal_um)},
+            {QStringLiteral("R_up"), jsonNumber(t.r_up_um)},
+            {QStringLiteral("R_down"), jsonNumber(t.r_down_um)},
+            {QStringLiteral("R"), jsonNumber(t.r_um)}};
+}
+
+QJsonObject evaluationJson(const iso::Evaluation& e) {
+    const iso::AxisResult& a = e.axis;
+    QJsonArray targets;
+    for (const iso::TargetResult& t : e.targets) targets.append(targetJson(t));
+    return {{QStringLiteral("edition"), iso::editionYear(e.settings.edition)},
+            {QStringLiteral("standard"), iso::toString(e.settings.edition)},
+            {QStringLiteral("coverage_factor"), e.settings.coverage_factor},
+            {QStringLiteral("unit"), QStringLiteral("µm")},
+            {QStringLiteral("B"), jsonNumber(a.reversal_um)},
+            {QStringLiteral("B_mean"), jsonNumber(a.mean_reversal_um)},
+            {QStringLiteral("R_up"), jsonNumber(a.r_up_um)},
+            {QStringLiteral("R_down"), jsonNumber(a.r_down_um)},
+            {QStringLiteral("R"), jsonNumber(a.r_um)},
+            {QStringLiteral("E_up"), jsonNumber(a.e_up_um)},
+            {QStringLiteral("E_down"), jsonNumber(a.e_down_um)},
+            {QStringLiteral("E"), jsonNumber(a.e_um)},
+            {QStringLiteral("M"), jsonNumber(a.m_um)},
+            {QStringLiteral("A_up"), jsonNumber(a.a_up_um)},
+            {QStringLiteral("A_down"), jsonNumber(a.a_down_um)},
+            {QStringLiteral("A"), jsonNumber(a.a_um)},
+            {QStringLiteral("cycles"), e.cycles},
+            {QStringLiteral("targets"), targets},
+            {QStringLiteral("skipped"), QJsonArray::fromStringList(e.skipped)},
+            {QStringLiteral("warnings"), QJsonArray::fromStringList(e.warnings)}};
+}
+
+void printEvaluation(const iso::Evaluation& e, const QString& source) {
+    const double k = e.settings.coverage_factor;
+    printLine(QStringLiteral("%1 evaluation of %2: %3 targets, %4 cycles")
+                  .arg(iso::toString(e.settings.edition), source)
+                  .arg(e.targets.size())
+                  .arg(e.cycles));
+    printLine(QStringLiteral("coverage factor k = %1 (R↑_i = %2·s↑_i, A from x̄ ± %1·s); "
+                             "deviation = actual − target, in µm; ↑ = '+' approach, ↓ = '-'")
+                  .arg(k)
+                  .arg(2 * k));
+    printLine(QString());
+    printLine(
+        QStringLiteral(" target_mm      x̄↑ µm      x̄↓ µm      s↑ µm      s↓ µm       B µm"
+                       "      R↑ µm      R↓ µm       R µm"));
+    for (const iso::TargetResult& t : e.targets) {
+        QString line = QStringLiteral("%1").arg(t.target_mm, 10, 'f', 3);
+        for (double v : {t.mean_up_um, t.mean_down_um, t.s_up_um, t.s_down_um, t.reversal_um,
+                         t.r_up_um, t.r_down_um, t.r_um})
+            line += QStringLiteral("%1").arg(um(v), 11);
+        printLine(line);
+    }
+    const iso::AxisResult& a = e.axis;
+    // Symbols with a combining mark (x̄, B̄) are one column wide but two
+    // characters long: the labels are padded by hand, not by QString::arg.
+    const std::pair<const char*, double> rows[] = {
+        {"B    reversal error (largest |B_i|, sign kept)   ", a.reversal_um},
+        {"B̄    mean reversal error                         ", a.mean_reversal_um},
+        {"R↑   unidirectional repeatability ↑              ", a.r_up_um},
+        {"R↓   unidirectional repeatability ↓              ", a.r_down_um},
+        {"R    bidirectional repeatability                 ", a.r_um},
+        {"E↑   unidirectional systematic error ↑           ", a.e_up_um},
+        {"E↓   unidirectional systematic error ↓           ", a.e_down_um},
+        {"E    bidirectional systematic error              ", a.e_um},
+        {"M    mean bidirectional positioning error        ", a.m_um},
+        {"A↑   unidirectional accuracy ↑                   ", a.a_up_um},
+        {"A↓   unidirectional accuracy ↓                   ", a.a_down_um},
+        {"A    bidirectional accuracy                      ", a.a_um}};
+    printLine(QString());
+    printLine(QStringLiteral("axis (%1, k = %2):").arg(iso::toString(e.settings.edition)).arg(k));
+    for (const auto& [label, value] : rows)
+        printLine(QStringLiteral("  ") + QString::fromUtf8(label) +
+                  QStringLiteral("%1 µm").arg(um(value), 9));
+    for (const QString& why : e.skipped) printLine(QStringLiteral("not determined: ") + why);
+}
+
+}  // namespace
+
+int iso230Command(const QStringList& args) {
+    QCommandLineParser parser;
+    const QCommandLineOption edition{
+        QStringLiteral("edition"),
+        QStringLiteral("ISO 230-2 edition named in the output: 2014 (default), 2006 or 1997."),
+        QStringLiteral("YEAR"), QStringLiteral("2014")};
+    const QCommandLineOption coverage{
+        QStringLiteral("coverage-factor"),
+        QStringLiteral("k of the expanded quantities (default 2: R↑_i = 4s↑_i, A from x̄ ± 2s)."),
+        QStringLiteral("K"), QStringLiteral("2")};
+    const QCommandLineOption runOption{
+        QStringLiteral("run"),
+        QStringLiteral("With a BUNDLE or --db: the run to evaluate (default: the positioning run, "
+                       "or the only run with positioning readings)."),
+        QStringLiteral("R")};
+    parseArguments(parser, args, campaignSourceOptions() << edition << coverage << runOption,
+                   {QStringLiteral("CSV"),
+                    QStringLiteral("Readings: a CSV file with columns target_mm, direction (+ "
+                                   "or -), cycle, deviation_um (actual - target); or a campaign "
+                                   "bundle folder or .zip (its positioning.csv)."),
+                    QStringLiteral("CSV (or BUNDLE, or --db FILE --campaign ID)"),
+                    {}});
+    iso::Settings settings;
+    const auto year = iso::editionFromString(parser.value(edition));
+    if (!year)
+        throw CliError(
+            QStringLiteral("--edition: '%1' is not 2014, 2006 or 1997").arg(parser.value(edition)),
+            2);
+    settings.edition = *year;
+    bool ok = false;
+    settings.coverage_factor = parser.value(coverage).toDouble(&ok);
+    QString why;
+    if (!ok || !settings.isValid(&why))
+        throw CliError(QStringLiteral("--coverage-factor: '%1' is not a positive number")
+                           .arg(parser.value(coverage)),
+                       2);
+
+    const QStringList positional = parser.positionalArguments();
+    std::vector<iso::Reading> readings;
+    QString source;
+    const bool fromCsv = !parser.isSet(QStringLiteral("db")) && positional.size() == 1 &&
+                         !QFileInfo(positional.front()).isDir() &&
+                         !positional.front().endsWith(QLatin1String(".zip"), Qt::CaseInsensitive);
+    if (positional.isEmpty() && !parser.isSet(QStringLiteral("db")))
+        throw CliError(QStringLiteral("give a CSV file, a BUNDLE or --db FILE --campaign ID"), 2);
+    if (fromCsv) {
+        if (parser.isSet(runOption))
+            throw CliError(QStringLiteral("--run is for a BUNDLE or --db, not a CSV file"), 2);
+        source = positional.front();
+        readings = readCsv(source);
+    } else {
+        if (positional.size() > 1 || (parser.isSet(QStringLiteral("db")) && !positional.isEmpty()))
+            throw CliError(QStringLiteral("give one CSV, one BUNDLE or --db FILE --campaign ID"),
+                           2);
+        const Campaign campaign = loadCampaignSource(parser);
+        const Run& run = chooseRun(campaign, parser.value(runOption));
+        source = QStringLiteral("run %1 of %2").arg(run.id, campaign.name);
+        readings = iso::readingsOf(run);
+    }
+
+    const iso::Evaluation result = iso::evaluate(readings, settings);
+    if (!result.ok()) throw CliError(source + QStringLiteral(": ") + result.error);
+    printWarnings(result.warnings);
+    if (parser.isSet(QStringLiteral("json"))) {
+        QJsonObject json = evaluationJson(result);
+        json[QStringLiteral("source")] = source;
+        printJson(json);
+        return 0;
+    }
+    printEvaluation(result, source);
+    return 0;
+}
+
+}  // namespace driftlab::cli

@@ -1,0 +1,125 @@
+// ISO 230-2 input that cannot be evaluated (refused, naming the target and
+// direction), the long-axis rule that skips what the standard skips, and the
+// warnings: drift from cycle to cycle and repeated readings.
+
+#include <gtest/gtest.h>
+
+#include "tests/iso/Iso230TestData.h"
+
+namespace driftlab::iso {
+namespace {
+
+using test::add;
+using test::golden3x5;
+using test::longAxisSingleApproach;
+
+constexpr double kExact = 1e-12;
+
+TEST(Iso230Validation, singleReadingOnShortAxisIsRefusedNamingTargetAndDirection) {
+    std::vector<Reading> r = golden3x5();
+    // Keep one ↓ reading at 100 mm.
+    std::erase_if(r, [](const Reading& x) {
+        return x.target_mm == 100 && x.direction == Direction::Negative && x.cycle > 1;
+    });
+    const Evaluation e = evaluate(r);
+    EXPECT_FALSE(e.ok());
+    EXPECT_EQ(e.error,
+              QStringLiteral("target 100 mm, direction - (↓): 1 reading, the standard deviation "
+                             "s needs at least 2 (ISO 230-2 allows one approach per direction "
+                             "only on axes over 2000 mm; this travel is 200 mm)"));
+}
+
+TEST(Iso230Validation, targetWithoutOneDirectionIsRefused) {
+    std::vector<Reading> r = golden3x5();
+    std::erase_if(r, [](const Reading& x) {
+        return x.target_mm == 200 && x.direction == Direction::Positive;
+    });
+    const Evaluation e = evaluate(r);
+    EXPECT_EQ(e.error, QStringLiteral("target 200 mm, direction + (↑): no reading; ISO 230-2 "
+                                      "needs both approaches at every target"));
+}
+
+TEST(Iso230Validation, noReadingsAndBadSettingsAreRefused) {
+    EXPECT_EQ(evaluate({}).error, QStringLiteral("no readings to evaluate"));
+    Settings settings;
+    settings.coverage_factor = 0;
+    EXPECT_FALSE(evaluate(golden3x5(), settings).ok());
+    EXPECT_TRUE(evaluate(golden3x5(), settings).error.contains(QStringLiteral("coverage factor")));
+    std::vector<Reading> r = golden3x5();
+    r[3].deviation_um = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(evaluate(r).error,
+              QStringLiteral("reading 4: target or deviation is not a finite number"));
+}
+
+TEST(Iso230Validation, longAxisWithOneApproachSkipsTheValuesThatNeedS) {
+    const Evaluation e = evaluate(longAxisSingleApproach());
+    ASSERT_TRUE(e.ok()) << qPrintable(e.error);
+    ASSERT_EQ(e.skipped.size(), 1);
+    EXPECT_TRUE(e.skipped.front().startsWith(
+        QStringLiteral("s↑_i, s↓_i, R↑_i, R↓_i, R_i, R↑, R↓, R, A↑, A↓, A not determined: "
+                       "target 0 mm, direction + (↑) has one reading")))
+        << qPrintable(e.skipped.front());
+    EXPECT_TRUE(e.skipped.front().contains(QStringLiteral("this travel is 2500 mm")));
+    // Hand values (Iso230TestData.h, G2).
+    EXPECT_NEAR(e.axis.reversal_um, 2, kExact);
+    EXPECT_NEAR(e.axis.mean_reversal_um, 1, kExact);
+    EXPECT_NEAR(e.axis.e_up_um, 3, kExact);
+    EXPECT_NEAR(e.axis.e_down_um, 5, kExact);
+    EXPECT_NEAR(e.axis.e_um, 5, kExact);
+    EXPECT_NEAR(e.axis.m_um, 3.5, kExact);
+    EXPECT_NEAR(e.targets[1].reversal_um, -1, kExact);
+    for (double skipped :
+         {e.axis.r_um, e.axis.r_up_um, e.axis.r_down_um, e.axis.a_um, e.axis.a_up_um,
+          e.axis.a_down_um, e.targets[0].s_up_um, e.targets[0].r_um})
+        EXPECT_TRUE(std::isnan(skipped));
+}
+
+TEST(Iso230Validation, driftFromCycleToCycleIsWarnedWithItsNumbers) {
+    // Both targets, both directions: 0, 1, 2, 3, 4 µm over cycles 1..5. Every
+    // x̄ = 2 and s = sqrt((4 + 1 + 0 + 1 + 4) / 4) = sqrt(2.5) = 1.58; the
+    // per-cycle mean residual is −2, −1, 0, 1, 2: a trend of 1 µm per cycle,
+    // 4 µm over the run, more than the mean s.
+    std::vector<Reading> r;
+    for (double target : {0.0, 100.0})
+        for (Direction d : {Direction::Positive, Direction::Negative})
+            add(r, target, d, {0, 1, 2, 3, 4});
+    const Evaluation e = evaluate(r);
+    ASSERT_TRUE(e.ok()) << qPrintable(e.error);
+    EXPECT_NEAR(e.targets[0].s_up_um, std::sqrt(2.5), kExact);
+    ASSERT_EQ(e.warnings.size(), 1);
+    EXPECT_EQ(e.warnings.front(),
+              QStringLiteral("deviations drift from cycle to cycle: the per-cycle mean deviation "
+                             "changes by 4.00 µm over cycles 1 to 5 (linear trend 1.000 µm per "
+                             "cycle), more than the mean standard deviation 1.58 µm; "
+                             "non-stationary data (e.g. thermal drift) inflate R and A"));
+}
+
+TEST(Iso230Validation, stationaryScatterIsNotCalledDrift) {
+    // G1's scatter −a, +a, 0, +a, −a has no trend over the cycles.
+    EXPECT_TRUE(evaluate(golden3x5()).warnings.isEmpty());
+}
+
+TEST(Iso230Validation, repeatedReadingOfOneCycleIsWarned) {
+    std::vector<Reading> r = golden3x5();
+    r.push_back({0, Direction::Positive, 2, 4});
+    const Evaluation e = evaluate(r);
+    ASSERT_TRUE(e.ok());
+    EXPECT_TRUE(e.warnings.contains(
+        QStringLiteral("target 0 mm, direction + (↑), cycle 2: 2 readings; each is counted as "
+                       "an approach of its own")))
+        << qPrintable(e.warnings.join('\n'));
+    EXPECT_EQ(e.targets[0].n_up, 6);
+}
+
+TEST(Iso230Validation, targetsWithinTheToleranceAreOneTarget) {
+    std::vector<Reading> r = golden3x5();
+    for (Reading& x : r)
+        if (x.target_mm == 100 && x.cycle == 3) x.target_mm = 100 + 1e-9;
+    const Evaluation e = evaluate(r);
+    ASSERT_TRUE(e.ok()) << qPrintable(e.error);
+    EXPECT_EQ(e.targets.size(), 3u);
+    EXPECT_NEAR(e.axis.r_um, 9, kExact);
+}
+
+}  // namespace
+}  // namespace driftlab::iso
