@@ -143,7 +143,7 @@ void printEvaluation(const iso::Evaluation& e, const QString& source) {
     // Symbols with a combining mark (x̄, B̄) are one column wide but two
     // characters long: the labels are padded by hand, not by QString::arg.
     const std::pair<const char*, double> rows[] = {
-        {"B    reversal error (largest |B_i|, sign kept)   ", a.reversal_um},
+        {"B    reversal error (max |B_i|)                  ", a.reversal_um},
         {"B̄    mean reversal error                         ", a.mean_reversal_um},
         {"R↑   unidirectional repeatability ↑              ", a.r_up_um},
         {"R↓   unidirectional repeatability ↓              ", a.r_down_um},

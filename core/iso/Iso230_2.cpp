@@ -280,10 +280,11 @@ Evaluation evaluate(const std::vector<Reading>& readings, const Settings& settin
 
     const auto& targets = result.targets;
     AxisResult& axis = result.axis;
-    axis.reversal_um = targets.front().reversal_um;
+    // B = max |B_i|, a magnitude as the standard defines it; B̄ keeps the signs.
+    axis.reversal_um = 0;
     double reversalSum = 0;
     for (const TargetResult& t : targets) {
-        if (std::abs(t.reversal_um) > std::abs(axis.reversal_um)) axis.reversal_um = t.reversal_um;
+        axis.reversal_um = std::max(axis.reversal_um, std::abs(t.reversal_um));
         reversalSum += t.reversal_um;
     }
     axis.mean_reversal_um = reversalSum / double(targets.size());

@@ -79,7 +79,7 @@ struct TargetResult {
 
 /// The axis values. NaN = not determined (see Evaluation::skipped).
 struct AxisResult {
-    double reversal_um = kNotDetermined;       ///< B: the B_i of largest magnitude, sign kept
+    double reversal_um = kNotDetermined;       ///< B = max |B_i| (a magnitude)
     double mean_reversal_um = kNotDetermined;  ///< B̄: mean of the B_i
     double r_up_um = kNotDetermined;           ///< R↑ = max R↑_i
     double r_down_um = kNotDetermined;         ///< R↓ = max R↓_i

@@ -139,8 +139,8 @@ TEST(Iso230Golden, axisValuesWorkedByHand) {
     EXPECT_NEAR(a.a_um, 12, kExact);
 }
 
-TEST(Iso230Golden, reversalErrorKeepsTheSignOfTheLargestMagnitude) {
-    // B_i = −6, +2, +1: B = −6 (not +2, the largest signed value); B̄ = −1.
+TEST(Iso230Golden, reversalErrorIsTheLargestMagnitudeAndItsMeanKeepsTheSigns) {
+    // B_i = −6, +2, +1: B = max |B_i| = 6 (not +2, the largest signed value); B̄ = −1.
     std::vector<Reading> r;
     add(r, 0, Direction::Positive, {0, 0});
     add(r, 0, Direction::Negative, {6, 6});
@@ -149,7 +149,7 @@ TEST(Iso230Golden, reversalErrorKeepsTheSignOfTheLargestMagnitude) {
     add(r, 100, Direction::Positive, {1, 1});
     add(r, 100, Direction::Negative, {0, 0});
     const Evaluation e = evaluateOk(r);
-    EXPECT_NEAR(e.axis.reversal_um, -6, kExact);
+    EXPECT_NEAR(e.axis.reversal_um, 6, kExact);
     EXPECT_NEAR(e.axis.mean_reversal_um, -1, kExact);
 }
 
