@@ -68,6 +68,8 @@ run_main_job() {
     local hidden
     hidden=$("$cli" import "$out/hidden" --db "$out/driftlab.sqlite")
     "$cli" diagnose --db "$out/driftlab.sqlite" --campaign "$hidden" --plots "$out/plots/diagnosis"
+    log "ISO 230-2 evaluation of S1's interferometer cycles (a moving state: its thermal drift inflates R, as the warning says)"
+    "$cli" iso230-2 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
     "$cli" export --db "$out/driftlab.sqlite" --campaign "$id" --out "$out/exported" >/dev/null
     log "done: bundle $out/campaign (and .zip), database $out/driftlab.sqlite, exported back to $out/exported, plots in $out/plots"
 }
