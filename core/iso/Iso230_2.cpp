@@ -159,21 +159,29 @@ std::optional<QString> driftWarning(const std::vector<Group>& groups,
         sxx += (cycle - cMean) * (cycle - cMean);
     }
     const double slope_um = sxy / sxx;
-    const int first = perCycle.begin()->first, last = perCycle.rbegin()->first;
-    const double change_um = slope_um * (last - first);
+    // The span of the per-cycle means, not only the trend: a warm-up followed by
+    // a cool-down rises and falls, and a straight line through it is flat.
+    int lowCycle = perCycle.begin()->first, highCycle = lowCycle;
+    double low_um = std::numeric_limits<double>::infinity(), high_um = -low_um;
+    for (const auto& [cycle, acc] : perCycle) {
+        const double mean_um = acc.first / acc.second;
+        if (mean_um < low_um) low_um = mean_um, lowCycle = cycle;
+        if (mean_um > high_um) high_um = mean_um, highCycle = cycle;
+    }
+    const double span_um = high_um - low_um;
     double sSum = 0;
     for (const TargetResult& t : targets) sSum += t.s_up_um + t.s_down_um;
     const double meanS_um = sSum / double(2 * targets.size());
     // A change below a nanometre is rounding, not drift (data with s = 0).
-    if (std::abs(change_um) <= meanS_um || std::abs(change_um) < 1e-3) return std::nullopt;
+    if (span_um <= meanS_um || span_um < 1e-3) return std::nullopt;
     return QStringLiteral(
-               "deviations drift from cycle to cycle: the per-cycle mean deviation changes by "
-               "%1 µm over cycles %2 to %3 (linear trend %4 µm per cycle), more than the mean "
-               "standard deviation %5 µm; non-stationary data (e.g. thermal drift) inflate R "
-               "and A")
-        .arg(change_um, 0, 'f', 2)
-        .arg(first)
-        .arg(last)
+               "deviations drift from cycle to cycle: the per-cycle mean deviation spans %1 µm "
+               "(lowest in cycle %2, highest in cycle %3; linear trend %4 µm per cycle), more "
+               "than the mean standard deviation %5 µm; non-stationary data (e.g. thermal "
+               "drift) inflate R and A")
+        .arg(span_um, 0, 'f', 2)
+        .arg(lowCycle)
+        .arg(highCycle)
         .arg(slope_um, 0, 'f', 3)
         .arg(meanS_um, 0, 'f', 2);
 }

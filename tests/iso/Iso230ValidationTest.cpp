@@ -89,14 +89,41 @@ TEST(Iso230Validation, driftFromCycleToCycleIsWarnedWithItsNumbers) {
     ASSERT_EQ(e.warnings.size(), 1);
     EXPECT_EQ(e.warnings.front(),
               QStringLiteral("deviations drift from cycle to cycle: the per-cycle mean deviation "
-                             "changes by 4.00 µm over cycles 1 to 5 (linear trend 1.000 µm per "
-                             "cycle), more than the mean standard deviation 1.58 µm; "
+                             "spans 4.00 µm (lowest in cycle 1, highest in cycle 5; linear trend "
+                             "1.000 µm per cycle), more than the mean standard deviation 1.58 µm; "
                              "non-stationary data (e.g. thermal drift) inflate R and A"));
 }
 
+TEST(Iso230Validation, driftThatRisesAndFallsIsWarnedThoughItsTrendIsFlat) {
+    // A warm-up then a cool-down: 0, 2, 4, 2, 0 µm over cycles 1..5. x̄ = 1.6,
+    // residuals −1.6, 0.4, 2.4, 0.4, −1.6: a straight line through them is flat
+    // (trend 0), but they span 4 µm, more than s = sqrt(8.8 / 4) = 1.48 µm.
+    std::vector<Reading> r;
+    for (double target : {0.0, 100.0})
+        for (Direction d : {Direction::Positive, Direction::Negative})
+            add(r, target, d, {0, 2, 4, 2, 0});
+    const Evaluation e = evaluate(r);
+    ASSERT_TRUE(e.ok()) << qPrintable(e.error);
+    ASSERT_EQ(e.warnings.size(), 1);
+    EXPECT_TRUE(e.warnings.front().startsWith(
+        QStringLiteral("deviations drift from cycle to cycle: the per-cycle mean deviation spans "
+                       "4.00 µm (lowest in cycle 1, highest in cycle 3; linear trend 0.000 µm")))
+        << qPrintable(e.warnings.front());
+}
+
 TEST(Iso230Validation, stationaryScatterIsNotCalledDrift) {
-    // G1's scatter −a, +a, 0, +a, −a has no trend over the cycles.
-    EXPECT_TRUE(evaluate(golden3x5()).warnings.isEmpty());
+    // Scatter of ±1 µm that no cycle shares across the axis: target 0 reads
+    // −1, +1, 0, +1, −1 and target 100 the opposite, so every per-cycle mean
+    // is 0 although s = 1 µm at every target.
+    std::vector<Reading> r;
+    for (Direction d : {Direction::Positive, Direction::Negative}) {
+        add(r, 0, d, {-1, 1, 0, 1, -1});
+        add(r, 100, d, {1, -1, 0, -1, 1});
+    }
+    const Evaluation e = evaluate(r);
+    ASSERT_TRUE(e.ok()) << qPrintable(e.error);
+    EXPECT_NEAR(e.targets[0].s_up_um, 1, kExact);
+    EXPECT_TRUE(e.warnings.isEmpty()) << qPrintable(e.warnings.join('\n'));
 }
 
 TEST(Iso230Validation, repeatedReadingOfOneCycleIsWarned) {
