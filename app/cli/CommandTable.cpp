@@ -13,6 +13,7 @@ int compareCommand(const QStringList& args);
 int diagnoseCommand(const QStringList& args);
 int benchCommand(const QStringList& args);
 int iso230Command(const QStringList& args);
+int iso230_3Command(const QStringList& args);
 
 namespace {
 
@@ -75,6 +76,10 @@ const std::vector<Command>& commands() {
          QStringLiteral("ISO 230-2 evaluation of target_mm,direction,cycle,deviation_um rows "
                         "(a CSV file, or a run of a campaign): accuracy, repeatability, "
                         "reversal per target and for the axis.")},
+        {QStringLiteral("iso230-3"), iso230_3Command,
+         QStringLiteral("iso230-3 BUNDLE [--run R] [--window-s W] [--tolerance-um D]"),
+         QStringLiteral("ISO 230-3 thermal drift: per target of a moving run, per probe of a "
+                        "spindle or ETVE run, the maximum drift, when, and when it stabilised.")},
         {QStringLiteral("compensate"), nullptr,
          QStringLiteral("compensate BUNDLE --format F --out FILE"),
          QStringLiteral("A compensation table for a controller, or pushed over Modbus.")},
