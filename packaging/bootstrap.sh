@@ -70,6 +70,9 @@ run_main_job() {
     "$cli" diagnose --db "$out/driftlab.sqlite" --campaign "$hidden" --plots "$out/plots/diagnosis"
     log "ISO 230-2 evaluation of S1's interferometer cycles (a moving state: its thermal drift inflates R, as the warning says)"
     "$cli" iso230-2 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
+    log "ISO 230-3 thermal drift of S1's targets and the spindle run's probes: maximum, when, time to stabilise"
+    "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
+    "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run SP1
     "$cli" export --db "$out/driftlab.sqlite" --campaign "$id" --out "$out/exported" >/dev/null
     log "done: bundle $out/campaign (and .zip), database $out/driftlab.sqlite, exported back to $out/exported, plots in $out/plots"
 }
