@@ -13,6 +13,7 @@ int compareCommand(const QStringList& args);
 int diagnoseCommand(const QStringList& args);
 int benchCommand(const QStringList& args);
 int iso230Command(const QStringList& args);
+int compensateCommand(const QStringList& args);
 
 namespace {
 
@@ -75,9 +76,12 @@ const std::vector<Command>& commands() {
          QStringLiteral("ISO 230-2 evaluation of target_mm,direction,cycle,deviation_um rows "
                         "(a CSV file, or a run of a campaign): accuracy, repeatability, "
                         "reversal per target and for the axis.")},
-        {QStringLiteral("compensate"), nullptr,
-         QStringLiteral("compensate BUNDLE --format F --out FILE"),
-         QStringLiteral("A compensation table for a controller, or pushed over Modbus.")},
+        {QStringLiteral("compensate"), compensateCommand,
+         QStringLiteral("compensate BUNDLE --format F --out FILE [--spacing MM | --points N] "
+                        "[--bidirectional]"),
+         QStringLiteral("A pitch-error compensation table from a run's positioning readings, "
+                        "written for a controller: linuxcnc, linuxcnc-type1, fanuc, fanuc-g10, "
+                        "sinumerik, heidenhain, csv (--push over Modbus: not built yet).")},
         {QStringLiteral("run"), nullptr,
          QStringLiteral("run --procedure FILE --rig sim|modbus://HOST:PORT --db FILE"),
          QStringLiteral("Run a test procedure on a rig and log it.")},
