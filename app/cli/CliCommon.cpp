@@ -219,4 +219,35 @@ void printLine(const QString& text) {
     std::fputc('\n', stdout);
 }
 
+const Run& choosePositioningRun(const Campaign& campaign, const QString& wanted) {
+    QStringList ids, positioning, withReadings;
+    for (const Run& run : campaign.runs) {
+        ids << run.id;
+        if (run.positioning.empty()) continue;
+        withReadings << run.id;
+        if (run.kind == RunKind::Positioning) positioning << run.id;
+    }
+    QString id = wanted;
+    if (id.isEmpty()) {
+        const QStringList& candidates = positioning.isEmpty() ? withReadings : positioning;
+        if (candidates.isEmpty())
+            throw CliError(QStringLiteral("no run of the campaign has positioning readings"));
+        if (candidates.size() > 1)
+            throw CliError(
+                QStringLiteral("runs %1 have positioning readings: choose one with --run")
+                    .arg(candidates.join(QStringLiteral(", "))),
+                2);
+        id = candidates.front();
+    }
+    for (const Run& run : campaign.runs)
+        if (run.id == id) {
+            if (run.positioning.empty())
+                throw CliError(QStringLiteral("run %1 has no positioning readings").arg(id));
+            return run;
+        }
+    throw CliError(QStringLiteral("--run: no run '%1' in the campaign (runs: %2)")
+                       .arg(id, ids.join(QStringLiteral(", "))),
+                   2);
+}
+
 }  // namespace driftlab::cli

@@ -58,6 +58,11 @@ std::unique_ptr<db::CampaignStore> openSourceStore(const QCommandLineParser& par
 std::optional<qint64> storeFitIfFromDatabase(const QCommandLineParser& parser,
                                              const db::ModelFitRecord& record);
 
+/// The run whose positioning readings a command uses: `wanted` (--run), else
+/// the one positioning run, else the one run with readings; throws CliError
+/// naming the runs when there is no such run or the choice is ambiguous.
+const Run& choosePositioningRun(const Campaign& campaign, const QString& wanted);
+
 /// A bundle folder or .zip archive; throws CliError naming the path and why.
 std::unique_ptr<BundleSource> openBundleOrFail(const QString& path);
 /// Reads and validates a bundle (folder or .zip); throws CliError with file:line:column: why.

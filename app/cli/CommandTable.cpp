@@ -14,6 +14,7 @@ int diagnoseCommand(const QStringList& args);
 int benchCommand(const QStringList& args);
 int iso230Command(const QStringList& args);
 int iso230_3Command(const QStringList& args);
+int compensateCommand(const QStringList& args);
 
 namespace {
 
@@ -80,9 +81,12 @@ const std::vector<Command>& commands() {
          QStringLiteral("iso230-3 BUNDLE [--run R] [--window-s W] [--tolerance-um D]"),
          QStringLiteral("ISO 230-3 thermal drift: per target of a moving run, per probe of a "
                         "spindle or ETVE run, the maximum drift, when, and when it stabilised.")},
-        {QStringLiteral("compensate"), nullptr,
-         QStringLiteral("compensate BUNDLE --format F --out FILE"),
-         QStringLiteral("A compensation table for a controller, or pushed over Modbus.")},
+        {QStringLiteral("compensate"), compensateCommand,
+         QStringLiteral("compensate BUNDLE --format F --out FILE [--spacing MM | --points N] "
+                        "[--bidirectional]"),
+         QStringLiteral("A pitch-error compensation table from a run's positioning readings, "
+                        "written for a controller: linuxcnc, linuxcnc-type1, fanuc, fanuc-g10, "
+                        "sinumerik, heidenhain, csv (--push over Modbus: not built yet).")},
         {QStringLiteral("run"), nullptr,
          QStringLiteral("run --procedure FILE --rig sim|modbus://HOST:PORT --db FILE"),
          QStringLiteral("Run a test procedure on a rig and log it.")},

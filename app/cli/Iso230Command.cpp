@@ -41,38 +41,6 @@ std::vector<iso::Reading> readCsv(const QString& path) {
     return readings;
 }
 
-/// The run to evaluate: --run, else the one positioning run, else the one run with readings.
-const Run& chooseRun(const Campaign& campaign, const QString& wanted) {
-    QStringList ids, positioning, withReadings;
-    for (const Run& run : campaign.runs) {
-        ids << run.id;
-        if (run.positioning.empty()) continue;
-        withReadings << run.id;
-        if (run.kind == RunKind::Positioning) positioning << run.id;
-    }
-    QString id = wanted;
-    if (id.isEmpty()) {
-        const QStringList& candidates = positioning.isEmpty() ? withReadings : positioning;
-        if (candidates.isEmpty())
-            throw CliError(QStringLiteral("no run of the campaign has positioning readings"));
-        if (candidates.size() > 1)
-            throw CliError(
-                QStringLiteral("runs %1 have positioning readings: choose one with --run")
-                    .arg(candidates.join(QStringLiteral(", "))),
-                2);
-        id = candidates.front();
-    }
-    for (const Run& run : campaign.runs)
-        if (run.id == id) {
-            if (run.positioning.empty())
-                throw CliError(QStringLiteral("run %1 has no positioning readings").arg(id));
-            return run;
-        }
-    throw CliError(QStringLiteral("--run: no run '%1' in the campaign (runs: %2)")
-                       .arg(id, ids.join(QStringLiteral(", "))),
-                   2);
-}
-
 QString um(double value) {
     return std::isfinite(value) ? QString::number(value, 'f', 3) : QStringLiteral("n/a");
 }
@@ -220,7 +188,7 @@ int iso230Command(const QStringList& args) {
             throw CliError(QStringLiteral("give one CSV, one BUNDLE or --db FILE --campaign ID"),
                            2);
         const Campaign campaign = loadCampaignSource(parser);
-        const Run& run = chooseRun(campaign, parser.value(runOption));
+        const Run& run = choosePositioningRun(campaign, parser.value(runOption));
         source = QStringLiteral("run %1 of %2").arg(run.id, campaign.name);
         readings = iso::readingsOf(run);
     }

@@ -15,9 +15,9 @@ using namespace driftlab::test;
 
 namespace {
 
-const QStringList kNotBuilt{"compensate", "run", "report", "batch"};
+const QStringList kNotBuilt{"run", "report", "batch"};
 const QStringList kBuilt{"import",  "export",   "info",     "simulate", "fit",
-                         "compare", "diagnose", "iso230-2", "bench"};
+                         "compare", "diagnose", "iso230-2", "bench",    "compensate"};
 
 QJsonObject json(const CliResult& r) {
     return QJsonDocument::fromJson(r.out).object();
@@ -63,8 +63,8 @@ TEST(CliUsage, usageMarksCommandsNotBuiltYet) {
         EXPECT_EQ(at->endsWith("   (not built yet)"), kNotBuilt.contains(name)) << at->constData();
     }
     EXPECT_TRUE(
-        usage().contains("\n  compensate BUNDLE --format F --out FILE   (not built yet)\n      A "
-                         "compensation table for a controller, or pushed over Modbus.\n"));
+        usage().contains("\n  run --procedure FILE --rig sim|modbus://HOST:PORT --db FILE   (not "
+                         "built yet)\n      Run a test procedure on a rig and log it.\n"));
 }
 
 TEST(CliUsage, bareCommandLineAsksForACommandOnStderr) {
@@ -158,10 +158,9 @@ TEST(CliUsage, notBuiltCommandSaysSo) {
         EXPECT_EQ(r.err, "driftlab-cli " + name.toUtf8() + ": not built yet in DriftLab " +
                              DRIFTLAB_VERSION + "\n");
     }
-    CliResult help = runCli({QStringLiteral("help"), QStringLiteral("compensate")});
+    CliResult help = runCli({QStringLiteral("help"), QStringLiteral("run")});
     EXPECT_EQ(help.exitCode, 3);
-    EXPECT_EQ(help.err,
-              "driftlab-cli compensate: not built yet in DriftLab " DRIFTLAB_VERSION "\n");
+    EXPECT_EQ(help.err, "driftlab-cli run: not built yet in DriftLab " DRIFTLAB_VERSION "\n");
 }
 
 TEST(CliUsage, missingRequiredOptionNamesCommandAndOption) {

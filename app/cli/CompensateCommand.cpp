@@ -1,0 +1,240 @@
+// compensate: a pitch-error compensation table from a run's positioning
+// readings (the cold geometric error, ISO 230-2 mean deviations), written for
+// a controller (DESIGN.md sections 8 and 9; docs/compensation.md).
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QSaveFile>
+
+#include "app/cli/CliCommon.h"
+#include "app/cli/CommandTable.h"
+#include "core/compensation/CsvExport.h"
+#include "core/compensation/FanucExport.h"
+#include "core/compensation/HeidenhainExport.h"
+#include "core/compensation/LinuxCncExport.h"
+#include "core/compensation/SinumerikExport.h"
+
+namespace driftlab::cli {
+namespace {
+
+using namespace driftlab::compensation;
+
+const QStringList kFormats{QStringLiteral("linuxcnc"),  QStringLiteral("linuxcnc-type1"),
+                           QStringLiteral("fanuc"),     QStringLiteral("fanuc-g10"),
+                           QStringLiteral("sinumerik"), QStringLiteral("heidenhain"),
+                           QStringLiteral("csv")};
+
+double positiveNumber(const QCommandLineParser& parser, const QString& name) {
+    bool ok = false;
+    const double value = parser.value(name).toDouble(&ok);
+    if (!ok || !std::isfinite(value) || value <= 0)
+        throw CliError(
+            QStringLiteral("--%1: '%2' is not a positive number").arg(name, parser.value(name)), 2);
+    return value;
+}
+
+double number(const QCommandLineParser& parser, const QString& name) {
+    bool ok = false;
+    const double value = parser.value(name).toDouble(&ok);
+    if (!ok || !std::isfinite(value))
+        throw CliError(QStringLiteral("--%1: '%2' is not a number").arg(name, parser.value(name)),
+                       2);
+    return value;
+}
+
+/// The file text for `format`; `axis` is the --axis value or empty.
+ExportResult exportTable(const CompensationTable& table, const QString& format, const QString& axis,
+                         const Campaign& campaign, int magnification) {
+    if (format == QLatin1String("linuxcnc")) return exportLinuxCnc(table, LinuxCncType::Type0);
+    if (format == QLatin1String("linuxcnc-type1"))
+        return exportLinuxCnc(table, LinuxCncType::Type1);
+    if (format == QLatin1String("csv")) return exportCsv(table);
+    if (format == QLatin1String("sinumerik")) {
+        SinumerikSettings settings;
+        if (!axis.isEmpty()) settings.axis = axis;
+        return exportSinumerik(table, settings);
+    }
+    if (format == QLatin1String("heidenhain")) {
+        HeidenhainSettings settings;
+        // The campaign names its axis; the .COM column is that axis's key.
+        const QString name = !axis.isEmpty()                    ? axis
+                             : !campaign.machine.axis.isEmpty() ? campaign.machine.axis
+                                                                : settings.axis;
+        settings.axis = name;
+        settings.table_name = name + QStringLiteral(".COM");
+        return exportHeidenhain(table, settings);
+    }
+    FanucSettings settings;
+    settings.magnification = magnification;
+    if (!axis.isEmpty()) {
+        bool ok = false;
+        settings.axis = axis.toInt(&ok);
+        if (!ok || settings.axis < 1)
+            throw CliError(
+                QStringLiteral("--axis: Fanuc takes a controlled axis number (1, 2, ...), not '%1'")
+                    .arg(axis),
+                2);
+    }
+    return format == QLatin1String("fanuc") ? exportFanucParameters(table, settings)
+                                            : exportFanucG10(table, settings);
+}
+
+void writeAtomically(const QString& path, const QByteArray& text) {
+    // QSaveFile: the controller's file is either the old one or the whole
+    // new one, never a half-written table.
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size() || !file.commit())
+        throw CliError(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
+}
+
+QString um(double value) {
+    return std::isfinite(value) ? QString::number(value, 'f', 3) + QStringLiteral(" µm")
+                                : QStringLiteral("n/a");
+}
+
+}  // namespace
+
+int compensateCommand(const QStringList& args) {
+    // --push is part of the command line scripts will use; until the Modbus
+    // push is built it is refused as a command not built (exit 3).
+    for (const QString& arg : args)
+        if (arg == QLatin1String("--push") || arg.startsWith(QLatin1String("--push=")))
+            throw CliError(QStringLiteral("--push: ") + notBuiltReason(), 3);
+
+    QCommandLineParser parser;
+    const QCommandLineOption format{
+        QStringLiteral("format"),
+        QStringLiteral("Controller format: %1.").arg(kFormats.join(QStringLiteral(", "))),
+        QStringLiteral("F")};
+    const QCommandLineOption out{QStringLiteral("out"),
+                                 QStringLiteral("File to write (replaced atomically)."),
+                                 QStringLiteral("FILE")};
+    const QCommandLineOption runOption{
+        QStringLiteral("run"),
+        QStringLiteral("The run whose positioning readings give the error (default: the "
+                       "positioning run, or the only run with positioning readings)."),
+        QStringLiteral("R")};
+    const QCommandLineOption spacing{QStringLiteral("spacing"),
+                                     QStringLiteral("Distance between table points."),
+                                     QStringLiteral("MM")};
+    const QCommandLineOption points{
+        QStringLiteral("points"),
+        QStringLiteral("Number of table points (default: one per measured target)."),
+        QStringLiteral("N")};
+    const QCommandLineOption start{
+        QStringLiteral("start"),
+        QStringLiteral("First point (default: the first measured target; never below it)."),
+        QStringLiteral("MM")};
+    const QCommandLineOption end{
+        QStringLiteral("end"),
+        QStringLiteral("Last point (default: the last measured target; never beyond it)."),
+        QStringLiteral("MM")};
+    const QCommandLineOption bidirectional{
+        QStringLiteral("bidirectional"),
+        QStringLiteral("Separate corrections for the + and - approach instead of their mean "
+                       "plus a backlash value.")};
+    const QCommandLineOption maxValue{QStringLiteral("max-value-um"),
+                                      QStringLiteral("Largest |correction| allowed (default 100)."),
+                                      QStringLiteral("V"), QStringLiteral("100")};
+    const QCommandLineOption maxStep{
+        QStringLiteral("max-step-um"),
+        QStringLiteral("Largest correction step between neighbouring points (default 20)."),
+        QStringLiteral("S"), QStringLiteral("20")};
+    const QCommandLineOption axis{
+        QStringLiteral("axis"),
+        QStringLiteral("Sinumerik machine axis name (default AX1), Heidenhain axis key (default: "
+                       "the campaign's axis) or Fanuc axis number (default 1)."),
+        QStringLiteral("X")};
+    const QCommandLineOption magnification{
+        QStringLiteral("magnification"),
+        QStringLiteral("Fanuc pitch error compensation magnification, parameter 3623 (default 1)."),
+        QStringLiteral("N"), QStringLiteral("1")};
+    const QCommandLineOption push{QStringLiteral("push"),
+                                  QStringLiteral("Push the table over Modbus TCP (not built yet)."),
+                                  QStringLiteral("modbus://HOST:PORT")};
+    parseArguments(parser, args,
+                   campaignSourceOptions()
+                       << format << out << runOption << spacing << points << start << end
+                       << bidirectional << maxValue << maxStep << axis << magnification << push,
+                   campaignSourceArguments({format, out}));
+
+    const QString formatName = parser.value(format);
+    if (!kFormats.contains(formatName))
+        throw CliError(QStringLiteral("--format: '%1' is not one of %2")
+                           .arg(formatName, kFormats.join(QStringLiteral(", "))),
+                       2);
+    TableSettings settings;
+    if (parser.isSet(spacing) && parser.isSet(points))
+        throw CliError(QStringLiteral("give --spacing or --points, not both"), 2);
+    if (parser.isSet(spacing))
+        settings.spacing_mm = positiveNumber(parser, spacing.names().front());
+    if (parser.isSet(points)) {
+        bool ok = false;
+        settings.points = parser.value(points).toInt(&ok);
+        if (!ok || settings.points < 2)
+            throw CliError(QStringLiteral("--points: '%1' is not a whole number of at least 2")
+                               .arg(parser.value(points)),
+                           2);
+    }
+    if (parser.isSet(start)) settings.start_mm = number(parser, start.names().front());
+    if (parser.isSet(end)) settings.end_mm = number(parser, end.names().front());
+    settings.bidirectional = parser.isSet(bidirectional);
+    Limits limits;
+    limits.max_value_um = positiveNumber(parser, maxValue.names().front());
+    limits.max_step_um = positiveNumber(parser, maxStep.names().front());
+    bool ok = false;
+    const int magnificationValue = parser.value(magnification).toInt(&ok);
+    if (!ok || magnificationValue < 1)
+        throw CliError(QStringLiteral("--magnification: '%1' is not a whole number of at least 1")
+                           .arg(parser.value(magnification)),
+                       2);
+
+    const Campaign campaign = loadCampaignSource(parser);
+    const Run& run = choosePositioningRun(campaign, parser.value(runOption));
+    const QString source = QStringLiteral("run %1 of %2").arg(run.id, campaign.name);
+    const iso::Evaluation evaluation = iso::evaluate(iso::readingsOf(run));
+    if (!evaluation.ok()) throw CliError(source + QStringLiteral(": ") + evaluation.error);
+    const TableResult built = buildTable(evaluation, settings, limits);
+    if (!built.ok()) throw CliError(source + QStringLiteral(": ") + built.error);
+    const CompensationTable& table = built.table;
+    const ExportResult exported =
+        exportTable(table, formatName, parser.value(axis), campaign, magnificationValue);
+    if (!exported.ok()) throw CliError(formatName + QStringLiteral(": ") + exported.error);
+    writeAtomically(parser.value(out), exported.text);
+    printWarnings(evaluation.warnings + built.warnings + exported.warnings);
+
+    if (parser.isSet(QStringLiteral("json"))) {
+        printJson({{QStringLiteral("source"), source},
+                   {QStringLiteral("run"), run.id},
+                   {QStringLiteral("format"), formatName},
+                   {QStringLiteral("out"), parser.value(out)},
+                   {QStringLiteral("points"), int(table.size())},
+                   {QStringLiteral("start_mm"), table.position_mm.front()},
+                   {QStringLiteral("end_mm"), table.position_mm.back()},
+                   {QStringLiteral("spacing_mm"), table.spacing_mm()},
+                   {QStringLiteral("bidirectional"), table.bidirectional},
+                   {QStringLiteral("max_correction_um"), table.maxAbsCorrectionUm()},
+                   {QStringLiteral("B_mean_um"), jsonNumber(table.mean_reversal_um)},
+                   {QStringLiteral("cycles"), evaluation.cycles},
+                   {QStringLiteral("sign"),
+                    QStringLiteral("correction = -(actual - target), added to the command")}});
+        return 0;
+    }
+    printLine(QStringLiteral("%1 table from %2 (ISO 230-2 mean deviations over %3 cycles) → %4")
+                  .arg(formatName, source)
+                  .arg(evaluation.cycles)
+                  .arg(QFileInfo(parser.value(out)).fileName()));
+    printLine(QStringLiteral("points: %1, %2 to %3 mm every %4 mm, %5")
+                  .arg(table.size())
+                  .arg(table.position_mm.front(), 0, 'f', 3)
+                  .arg(table.position_mm.back(), 0, 'f', 3)
+                  .arg(table.spacing_mm(), 0, 'f', 3)
+                  .arg(table.bidirectional ? QStringLiteral("bidirectional")
+                                           : QStringLiteral("unidirectional")));
+    printLine(QStringLiteral("max |correction|: %1 (correction = −deviation, added to the "
+                             "commanded position)")
+                  .arg(um(table.maxAbsCorrectionUm())));
+    printLine(QStringLiteral("backlash: mean reversal B̄ = %1").arg(um(table.mean_reversal_um)));
+    return 0;
+}
+
+}  // namespace driftlab::cli
