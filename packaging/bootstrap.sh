@@ -73,6 +73,12 @@ run_main_job() {
     log "ISO 230-3 thermal drift of S1's targets and the spindle run's probes: maximum, when, time to stabilise"
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run SP1
+    log "compensation tables from S1's interferometer readings for LinuxCNC and Sinumerik, in $out/compensation/"
+    mkdir -p "$out/compensation"
+    "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --format linuxcnc \
+        --spacing 30 --out "$out/compensation/x.comp"
+    "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --format sinumerik \
+        --spacing 30 --out "$out/compensation/x_eec.ini" >/dev/null
     "$cli" export --db "$out/driftlab.sqlite" --campaign "$id" --out "$out/exported" >/dev/null
     log "done: bundle $out/campaign (and .zip), database $out/driftlab.sqlite, exported back to $out/exported, plots in $out/plots"
 }
