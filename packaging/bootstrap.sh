@@ -46,9 +46,9 @@ build_project() {
 run_main_job() {
     local cli=$build/app/driftlab-cli out=$build/main-job
     rm -rf "$out" && mkdir -p "$out"
-    log "main job 1/6: simulating a five-state campaign on the built-in rig"
+    log "main job 1/9: simulating a five-state campaign on the built-in rig"
     "$cli" simulate --out "$out/campaign" --plots "$out/plots" --spindle --seed 1 >/dev/null
-    log "main job 2/6: zipping the bundle as a user mails it, importing the zip into $out/driftlab.sqlite (checked, then one transaction)"
+    log "main job 2/9: zipping the bundle as a user mails it, importing the zip into $out/driftlab.sqlite (checked, then one transaction)"
     (cd "$out" && zip -qr campaign.zip campaign)
     local id
     id=$("$cli" import "$out/campaign.zip" --db "$out/driftlab.sqlite")
@@ -57,23 +57,23 @@ run_main_job() {
         log "the same campaign imported twice went unnoticed"; return 1
     fi
     log "the unzipped folder is the same content: $(tail -n 1 "$out/again.err")"
-    log "main job 3/6: heat-transfer model identified on S1, tested on S2-S5 (stored in the database)"
+    log "main job 3/9: heat-transfer model identified on S1, tested on S2-S5 (stored in the database)"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model heat-transfer --train S1
-    log "main job 4/6: the same with the best temperature regression (mlr)"
+    log "main job 4/9: the same with the best temperature regression (mlr)"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model mlr --train S1
-    log "main job 5/6: every model, fitted on each state and scored on every other"
+    log "main job 5/9: every model, fitted on each state and scored on every other"
     "$cli" compare --db "$out/driftlab.sqlite" --campaign "$id"
-    log "main job 6/6: a second campaign with an effect hidden in it (forced convection); the diagnosis must find it"
+    log "main job 6/9: a second campaign with an effect hidden in it (forced convection); the diagnosis must find it"
     "$cli" simulate --out "$out/hidden" --seed 2 --effect forced_convection=0.05 >/dev/null
     local hidden
     hidden=$("$cli" import "$out/hidden" --db "$out/driftlab.sqlite")
     "$cli" diagnose --db "$out/driftlab.sqlite" --campaign "$hidden" --plots "$out/plots/diagnosis"
-    log "ISO 230-2 evaluation of S1's interferometer cycles (a moving state: its thermal drift inflates R, as the warning says)"
+    log "main job 7/9: ISO 230-2 evaluation of S1's interferometer cycles (a moving state: its thermal drift inflates R, as the warning says)"
     "$cli" iso230-2 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
-    log "ISO 230-3 thermal drift of S1's targets and the spindle run's probes: maximum, when, time to stabilise"
+    log "main job 8/9: ISO 230-3 thermal drift of S1's targets and the spindle run's probes: maximum, when, time to stabilise"
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run SP1
-    log "compensation tables from S1's interferometer readings for LinuxCNC and Sinumerik, in $out/compensation/"
+    log "main job 9/9: compensation tables from S1's interferometer readings for LinuxCNC and Sinumerik, in $out/compensation/"
     mkdir -p "$out/compensation"
     "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --format linuxcnc \
         --spacing 30 --out "$out/compensation/x.comp"
