@@ -199,6 +199,25 @@ void endProgressLine() {
     g_progressLineOpen = false;
 }
 
+double numberOption(const QCommandLineParser& parser, const QCommandLineOption& option) {
+    bool ok = false;
+    const double value = parser.value(option).toDouble(&ok);
+    if (!ok || !std::isfinite(value))
+        throw CliError(QStringLiteral("--%1: '%2' is not a number")
+                           .arg(option.names().front(), parser.value(option)),
+                       2);
+    return value;
+}
+
+double positiveNumberOption(const QCommandLineParser& parser, const QCommandLineOption& option) {
+    const double value = numberOption(parser, option);
+    if (value <= 0)
+        throw CliError(QStringLiteral("--%1: '%2' is not a positive number")
+                           .arg(option.names().front(), parser.value(option)),
+                       2);
+    return value;
+}
+
 QJsonValue jsonNumber(double value) {
     return std::isfinite(value) ? QJsonValue(value) : QJsonValue();
 }

@@ -75,6 +75,11 @@ bool printProgress(const QString& label, double fraction);
 /// Ends an unfinished progress line so that what follows starts on its own line.
 void endProgressLine();
 
+/// The value of a numeric option; throws CliError (exit 2) naming the option
+/// when it is not a finite number, or (positiveNumber) not above zero.
+double numberOption(const QCommandLineParser& parser, const QCommandLineOption& option);
+double positiveNumberOption(const QCommandLineParser& parser, const QCommandLineOption& option);
+
 /// NaN (not determined) is JSON null.
 QJsonValue jsonNumber(double value);
 /// "S1, S2,S3" → {S1, S2, S3}.

@@ -23,24 +23,6 @@ const QStringList kFormats{QStringLiteral("linuxcnc"),  QStringLiteral("linuxcnc
                            QStringLiteral("sinumerik"), QStringLiteral("heidenhain"),
                            QStringLiteral("csv")};
 
-double positiveNumber(const QCommandLineParser& parser, const QString& name) {
-    bool ok = false;
-    const double value = parser.value(name).toDouble(&ok);
-    if (!ok || !std::isfinite(value) || value <= 0)
-        throw CliError(
-            QStringLiteral("--%1: '%2' is not a positive number").arg(name, parser.value(name)), 2);
-    return value;
-}
-
-double number(const QCommandLineParser& parser, const QString& name) {
-    bool ok = false;
-    const double value = parser.value(name).toDouble(&ok);
-    if (!ok || !std::isfinite(value))
-        throw CliError(QStringLiteral("--%1: '%2' is not a number").arg(name, parser.value(name)),
-                       2);
-    return value;
-}
-
 /// The file text for `format`; `axis` is the --axis value or empty.
 ExportResult exportTable(const CompensationTable& table, const QString& format, const QString& axis,
                          const Campaign& campaign, int magnification) {
@@ -165,8 +147,7 @@ int compensateCommand(const QStringList& args) {
     TableSettings settings;
     if (parser.isSet(spacing) && parser.isSet(points))
         throw CliError(QStringLiteral("give --spacing or --points, not both"), 2);
-    if (parser.isSet(spacing))
-        settings.spacing_mm = positiveNumber(parser, spacing.names().front());
+    if (parser.isSet(spacing)) settings.spacing_mm = positiveNumberOption(parser, spacing);
     if (parser.isSet(points)) {
         bool ok = false;
         settings.points = parser.value(points).toInt(&ok);
@@ -175,12 +156,12 @@ int compensateCommand(const QStringList& args) {
                                .arg(parser.value(points)),
                            2);
     }
-    if (parser.isSet(start)) settings.start_mm = number(parser, start.names().front());
-    if (parser.isSet(end)) settings.end_mm = number(parser, end.names().front());
+    if (parser.isSet(start)) settings.start_mm = numberOption(parser, start);
+    if (parser.isSet(end)) settings.end_mm = numberOption(parser, end);
     settings.bidirectional = parser.isSet(bidirectional);
     Limits limits;
-    limits.max_value_um = positiveNumber(parser, maxValue.names().front());
-    limits.max_step_um = positiveNumber(parser, maxStep.names().front());
+    limits.max_value_um = positiveNumberOption(parser, maxValue);
+    limits.max_step_um = positiveNumberOption(parser, maxStep);
     bool ok = false;
     const int magnificationValue = parser.value(magnification).toInt(&ok);
     if (!ok || magnificationValue < 1)

@@ -162,13 +162,7 @@ int iso230Command(const QStringList& args) {
             QStringLiteral("--edition: '%1' is not 2014, 2006 or 1997").arg(parser.value(edition)),
             2);
     settings.edition = *year;
-    bool ok = false;
-    settings.coverage_factor = parser.value(coverage).toDouble(&ok);
-    QString why;
-    if (!ok || !settings.isValid(&why))
-        throw CliError(QStringLiteral("--coverage-factor: '%1' is not a positive number")
-                           .arg(parser.value(coverage)),
-                       2);
+    settings.coverage_factor = positiveNumberOption(parser, coverage);
 
     const QStringList positional = parser.positionalArguments();
     std::vector<iso::Reading> readings;

@@ -199,16 +199,6 @@ void printProbes(const iso::ProbeDriftEvaluation& e, const QString& label) {
     for (const QString& note : e.notes) printLine(QStringLiteral("note: ") + note);
 }
 
-double positiveOption(const QCommandLineParser& parser, const QCommandLineOption& option) {
-    bool ok = false;
-    const double value = parser.value(option).toDouble(&ok);
-    if (!ok || !std::isfinite(value) || value <= 0)
-        throw CliError(QStringLiteral("--%1: '%2' is not a positive number")
-                           .arg(option.names().front(), parser.value(option)),
-                       2);
-    return value;
-}
-
 }  // namespace
 
 int iso230_3Command(const QStringList& args) {
@@ -236,9 +226,9 @@ int iso230_3Command(const QStringList& args) {
                    campaignSourceOptions() << runOption << window << tolerance << distance,
                    campaignSourceArguments());
     iso::DriftSettings settings;
-    settings.window_s = positiveOption(parser, window);
-    settings.tolerance_um = positiveOption(parser, tolerance);
-    if (parser.isSet(distance)) settings.probe_distance_mm = positiveOption(parser, distance);
+    settings.window_s = positiveNumberOption(parser, window);
+    settings.tolerance_um = positiveNumberOption(parser, tolerance);
+    if (parser.isSet(distance)) settings.probe_distance_mm = positiveNumberOption(parser, distance);
 
     const Campaign campaign = loadCampaignSource(parser);
     // Chosen before anything is printed: a bad --run leaves stdout empty.
