@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/domain/Run.h"
+#include "db/SqliteStatement.h"
 
 namespace driftlab::db {
 
@@ -26,9 +27,6 @@ constexpr std::size_t kRowsPerBlock = 2048;
 class SampleBlockWriter {
 public:
     SampleBlockWriter(sqlite3* handle, std::size_t columnCount, std::vector<qint64> runIds);
-    ~SampleBlockWriter();
-    SampleBlockWriter(const SampleBlockWriter&) = delete;
-    SampleBlockWriter& operator=(const SampleBlockWriter&) = delete;
 
     void append(std::size_t runIndex, double time_s, const double* values);
     /// Writes every partly filled block.
@@ -42,8 +40,7 @@ private:
     };
     void write(std::size_t runIndex);
 
-    sqlite3* m_handle;
-    sqlite3_stmt* m_insert = nullptr;
+    SqliteStatement m_insert;
     std::size_t m_columns;
     std::vector<qint64> m_runIds;
     std::vector<Pending> m_pending;
@@ -53,10 +50,6 @@ private:
 /// Reads the samples of a run in time order into `series`, whose `columns`
 /// are set; throws QString on a database error or a malformed block.
 void loadSampleBlocks(sqlite3* handle, qint64 runId, SampleSeries& series);
-
-}  // namespace driftlab::db
-
-namespace driftlab::db {
 
 /// Schema v2 → v3: moves the rows of the old one-value-per-row `sample` table
 /// into blocks and drops it. Runs inside the migration's transaction; throws
