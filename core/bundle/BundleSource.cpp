@@ -37,10 +37,6 @@ std::unique_ptr<BundleSource> openBundleFolder(const QString& path, QString* err
     return std::make_unique<FolderBundleSource>(path);
 }
 
-}  // namespace driftlab
-
-namespace driftlab {
-
 QByteArray bundleContentSha256(const BundleSource& source, QString* error) {
     QCryptographicHash hash(QCryptographicHash::Sha256);
     QByteArray buffer(1 << 20, Qt::Uninitialized);

@@ -24,10 +24,6 @@ public:
 /// A bundle folder on disk; nullptr with `error` set when `path` is not a folder.
 std::unique_ptr<BundleSource> openBundleFolder(const QString& path, QString* error);
 
-}  // namespace driftlab
-
-namespace driftlab {
-
 /// SHA-256 (hex) of a bundle's content: each present bundle file's name, size
 /// and bytes in a fixed order, the same for a folder and a zip of it. Empty
 /// with `error` set when a file cannot be read.
