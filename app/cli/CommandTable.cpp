@@ -15,6 +15,7 @@ int benchCommand(const QStringList& args);
 int iso230Command(const QStringList& args);
 int iso230_3Command(const QStringList& args);
 int compensateCommand(const QStringList& args);
+int liveCommand(const QStringList& args);
 
 namespace {
 
@@ -87,6 +88,11 @@ const std::vector<Command>& commands() {
          QStringLiteral("A pitch-error compensation table from a run's positioning readings, "
                         "written for a controller: linuxcnc, linuxcnc-type1, fanuc, fanuc-g10, "
                         "sinumerik, heidenhain, csv (--push over Modbus: not built yet).")},
+        {QStringLiteral("live"), liveCommand,
+         QStringLiteral("live BUNDLE --run R --train R,.. [--interval-s S] [--cutting FROM-TO,..]"),
+         QStringLiteral("Live thermal compensation replayed on a measured run: the heat-transfer "
+                        "model fitted on the training runs updates the correction online, only "
+                        "between cuts, and is scored on the run's measured thermal error.")},
         {QStringLiteral("run"), nullptr,
          QStringLiteral("run --procedure FILE --rig sim|modbus://HOST:PORT --db FILE"),
          QStringLiteral("Run a test procedure on a rig and log it.")},

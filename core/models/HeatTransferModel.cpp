@@ -77,15 +77,33 @@ QString HeatTransferModel::describe() const {
         }());
 }
 
-ScrewRunOutputs HeatTransferModel::simulateWith(const double* values, const RunData& run,
-                                                const ScrewRunInputs& inputs,
-                                                const std::vector<PredictionPoint>& at) const {
+physics::ScrewThermalParameters HeatTransferModel::parametersWith(const double* values,
+                                                                  const RunData& run) const {
     physics::ScrewThermalParameters p = screwParameters(run, {}, options_.cells);
     p.density_kg_m3 = run.screw->density_kg_m3;
     p.specific_heat_J_kgK = run.screw->specific_heat_J_kgK;
     p.conductivity_W_mK = run.screw->conductivity_W_mK;
     variant_.physics(values, p);
-    ScrewRunOutputs out = simulateScrewRun(inputs, p, at);
+    return p;
+}
+
+std::optional<physics::ScrewThermalParameters> HeatTransferModel::fittedScrew(const RunData& run,
+                                                                              QString* why) const {
+    const QString problem =
+        !isFitted()  ? QStringLiteral("model 'heat-transfer' is not fitted yet")
+        : !run.screw ? QStringLiteral("run '%1' has no screw to simulate").arg(run.run_id)
+                     : QString();
+    if (!problem.isEmpty()) {
+        if (why) *why = problem;
+        return std::nullopt;
+    }
+    return parametersWith(values_.data(), run);
+}
+
+ScrewRunOutputs HeatTransferModel::simulateWith(const double* values, const RunData& run,
+                                                const ScrewRunInputs& inputs,
+                                                const std::vector<PredictionPoint>& at) const {
+    ScrewRunOutputs out = simulateScrewRun(inputs, parametersWith(values, run), at);
     if (variant_.readings) variant_.readings(values, inputs, at, out);
     return out;
 }

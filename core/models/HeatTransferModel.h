@@ -8,6 +8,7 @@
 // refit the same model extended by a candidate effect.
 
 #include <functional>
+#include <optional>
 
 #include "core/models/ScrewRunSimulation.h"
 #include "core/models/ThermalErrorModel.h"
@@ -77,6 +78,10 @@ public:
     /// What the fitted model misses on a run (throws ModelError on bad data).
     ReadingResiduals residuals(const RunData& run) const;
     const HeatTransferOptions& options() const { return options_; }
+    /// The screw of `run` with the fitted coefficients: what live compensation
+    /// steps online. None (and why) before a fit or without a screw.
+    std::optional<physics::ScrewThermalParameters> fittedScrew(const RunData& run,
+                                                               QString* why) const;
 
 protected:
     FitSummary fitRuns(const std::vector<RunData>& training) override;
@@ -88,6 +93,7 @@ private:
     /// none when infinite) to `out`; returns how many.
     std::size_t writeResiduals(const double* values, const RunData& run,
                                const ScrewRunInputs& inputs, double huberSigmas, double* out) const;
+    physics::ScrewThermalParameters parametersWith(const double* values, const RunData& run) const;
     ScrewRunOutputs simulateWith(const double* values, const RunData& run,
                                  const ScrewRunInputs& inputs,
                                  const std::vector<PredictionPoint>& at) const;
