@@ -1,0 +1,32 @@
+#pragma once
+// The thermal part of a compensation table: a model fitted on training runs,
+// evaluated at a stated state (a run and a time in it) over the axis. Shared
+// by `compensate` (table = cold error + this) and the straight-line
+// temperature compensation formats.
+
+#include <QCommandLineParser>
+
+#include "core/compensation/CompensationTable.h"
+#include "core/domain/Campaign.h"
+
+namespace driftlab::cli {
+
+struct ThermalProfile {
+    compensation::ErrorProfile error_um;  ///< actual − target, µm, at a position
+    QString description;                  ///< "heat-transfer fitted on S1, at S3 t = 3600 s"
+    double from_mm = 0, to_mm = 0;        ///< where it was evaluated
+    double fixed_end_mm = 0;              ///< the screw's fixed end (0 without a screw)
+};
+
+/// --model, --train, --at.
+QList<QCommandLineOption> thermalProfileOptions();
+
+/// True when --model or --at was given (both are then required).
+bool wantsThermalProfile(const QCommandLineParser& parser);
+
+/// Fits the model and evaluates it at the state over [from_mm, to_mm].
+/// Throws CliError naming the option at fault.
+ThermalProfile thermalProfile(const QCommandLineParser& parser, const Campaign& campaign,
+                              double from_mm, double to_mm);
+
+}  // namespace driftlab::cli
