@@ -181,9 +181,11 @@ def _run_in(workdir, display, plan, halfiles, axis_extra, joint_extra, extra_sec
                                stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True,
                                start_new_session=True)
+    timed_out = False
     try:
         output, _ = process.communicate(timeout=timeout_s)
     except subprocess.TimeoutExpired:
+        timed_out = True
         # The display hung: stop the whole session, then clear HAL.
         os.killpg(process.pid, signal.SIGTERM)
         try:
@@ -193,7 +195,9 @@ def _run_in(workdir, display, plan, halfiles, axis_extra, joint_extra, extra_sec
             output, _ = process.communicate()
         output += "\nTIMEOUT: LinuxCNC did not finish in %d s\n" % timeout_s
     seconds = time.monotonic() - started
-    code = process.returncode
+    # LinuxCNC's script exits 0 after its own cleanup on SIGTERM: a timeout is
+    # a failure all the same.
+    code = 124 if timed_out else process.returncode
     if code != 0:
         cleanup(env)
     result = None
