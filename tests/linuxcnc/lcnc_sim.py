@@ -124,8 +124,8 @@ def local_nml():
 def rtapi_env(workdir):
     env = dict(os.environ)
     if os.geteuid() == 0:
-        # rtapi_app, now `nobody`, binds its socket here: a folder of its own,
-        # since the 0700 work folder is closed to it.
+        # rtapi_app, now `nobody`, binds its socket in a folder it owns; the
+        # work folder (0700 from mkdtemp) must let it pass through (0711).
         fifo_dir = os.path.join(workdir, "rtapi")
         os.makedirs(fifo_dir, exist_ok=True)
         os.chown(fifo_dir, FALLBACK_UID, -1)
