@@ -113,10 +113,10 @@ def main():
         print(output)
         print("FAIL: LinuxCNC run did not complete")
         return 1
-    return judge(result["readings"], expected)
+    return judge(result["readings"], expected, 2 * len(positions))
 
 
-def judge(readings, expected):
+def judge(readings, expected, count):
     print("%-12s %-4s %-14s %-14s %-12s" % ("position_mm", "dir", "correction_um",
                                             "expected_um", "error_um"))
     failures, largest_um = 0, 0.0
@@ -137,6 +137,9 @@ def judge(readings, expected):
                                                            "  FAIL" if bad else ""))
     # A table LinuxCNC ignored would give corrections of 0: only a table with
     # corrections well above the tolerance proves it was applied.
+    if len(readings) != count:
+        print("FAIL: %d readings, not %d" % (len(readings), count))
+        failures += 1
     if largest_um < 5 * TOLERANCE_UM:
         print("FAIL: the largest expected correction is %.3f um: too small to tell "
               "an applied table from none" % largest_um)
