@@ -6,7 +6,8 @@ namespace driftlab::push {
 
 ControllerRegisters::ControllerRegisters(std::uint16_t* registers, int capacity, MachineState state,
                                          ControllerFaults faults)
-    : m_regs(registers), m_capacity(capacity), m_faults(faults) {
+    : m_regs(registers), m_capacity(capacity) {
+    setFaults(faults);
     std::fill(m_regs, m_regs + kRegisterCount, 0);
     m_regs[reg::kMagic] = kMagicValue;
     m_regs[reg::kMapVersion] = kMapVersionValue;
@@ -23,10 +24,14 @@ bool ControllerRegisters::writable(int address, int count) const {
            inside(reg::kLiveFirst, reg::kLiveCount - 1);  // 2005 live_stale is the controller's
 }
 
+void ControllerRegisters::setFaults(ControllerFaults faults) {
+    m_faults = faults;
+    m_dropAt = faults.drop_after_writes < 0 ? -1 : m_writes + faults.drop_after_writes + 1;
+}
+
 bool ControllerRegisters::dropThisWrite() {
-    ++m_writes;
-    if (m_faults.drop_after_writes < 0 || m_writes != m_faults.drop_after_writes + 1) return false;
-    m_faults.drop_after_writes = -1;
+    if (++m_writes != m_dropAt) return false;
+    m_dropAt = -1;
     return true;
 }
 

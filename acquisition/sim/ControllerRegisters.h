@@ -13,8 +13,9 @@ namespace driftlab::push {
 
 /// Faults the simulated controller injects, each once unless said otherwise.
 struct ControllerFaults {
-    /// Closes the connection instead of answering write request number N+1
-    /// (counted from the start); -1: never.
+    /// Closes the connection instead of answering the write request that
+    /// follows N more write requests (counted from when the faults are set);
+    /// -1: never.
     int drop_after_writes = -1;
     /// Answers every commit with "refused".
     bool refuse_commit = false;
@@ -49,6 +50,7 @@ public:
     void scan();
 
     void setMachineState(MachineState state);
+    void setFaults(ControllerFaults faults);
     int writeRequests() const { return m_writes; }
     int applied() const { return m_applied; }
     TableImage active() const;
@@ -68,6 +70,7 @@ private:
     bool m_pending = false;
     TableImage m_previous;  ///< what a rollback restores (version 0: no table)
     int m_writes = 0;
+    int m_dropAt = -1;  ///< the write request number the drop fault closes on
     int m_polls = 0;
     int m_applied = 0;
 };

@@ -146,6 +146,11 @@ void SimulatedController::setMachineState(MachineState state) {
     if (m_registers) m_registers->setMachineState(state);
 }
 
+void SimulatedController::setFaults(const ControllerFaults& faults) {
+    std::lock_guard lock(m_mutex);
+    if (m_registers) m_registers->setFaults(faults);
+}
+
 TableImage SimulatedController::activeTable() const {
     std::lock_guard lock(m_mutex);
     return m_registers ? m_registers->active() : TableImage{};

@@ -46,6 +46,8 @@ public:
 
     // Thread-safe views and controls for tests and the CLI.
     void setMachineState(MachineState state);
+    /// Replaces the injected faults (a drop counts from now).
+    void setFaults(const ControllerFaults& faults);
     TableImage activeTable() const;
     /// Write requests received (also the one a drop fault closed on).
     int writeRequests() const;
