@@ -5,6 +5,14 @@
 #include <QSqlQuery>
 
 namespace driftlab::db {
+namespace {
+
+/// Qt binds a null QString as SQL NULL; these columns hold '' when empty.
+QString text(const QString& value) {
+    return value.isNull() ? QStringLiteral("") : value;
+}
+
+}  // namespace
 
 std::optional<qint64> storePush(CampaignStore& store, const PushRecord& push, QString* error) {
     QSqlQuery q(store.database());
@@ -13,14 +21,14 @@ std::optional<qint64> storePush(CampaignStore& store, const PushRecord& push, QS
         "table_checksum, table_json, result, message, steps_json) "
         "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"));
     q.addBindValue(push.campaign_id ? QVariant(*push.campaign_id) : QVariant());
-    q.addBindValue(push.run);
-    q.addBindValue(push.controller_url);
+    q.addBindValue(text(push.run));
+    q.addBindValue(text(push.controller_url));
     q.addBindValue(push.table_version);
     q.addBindValue(push.points);
     q.addBindValue(push.table_checksum);
     q.addBindValue(QString::fromUtf8(QJsonDocument(push.table).toJson(QJsonDocument::Compact)));
-    q.addBindValue(push.result);
-    q.addBindValue(push.message);
+    q.addBindValue(text(push.result));
+    q.addBindValue(text(push.message));
     q.addBindValue(QString::fromUtf8(QJsonDocument(push.steps).toJson(QJsonDocument::Compact)));
     if (!q.exec()) {
         *error = QStringLiteral("%1: cannot record the push to %2: %3")
