@@ -58,8 +58,7 @@ bool ModbusTcpLink::connect(QString* error) {
     return true;
 }
 
-QString ModbusTcpLink::failure(const QString& what, int address, int count) {
-    const int code = errno;
+QString ModbusTcpLink::failure(int code, const QString& what, int address, int count) {
     const QString text = QStringLiteral("%1: %2 registers %3–%4: %5")
                              .arg(m_url.endpoint(), what)
                              .arg(address)
@@ -82,7 +81,8 @@ bool ModbusTcpLink::readRegisters(int address, int count, std::vector<std::uint1
         const int n = std::min(kMaxReadRegisters, count - done);
         ++m_requests;
         if (modbus_read_registers(m_context, address + done, n, out.data() + done) != n) {
-            *error = failure(QStringLiteral("reading"), address + done, n);
+            const int code = errno;
+            *error = failure(code, QStringLiteral("reading"), address + done, n);
             return false;
         }
         done += n;
@@ -102,7 +102,8 @@ bool ModbusTcpLink::writeRegisters(int address, std::span<const std::uint16_t> v
         ++m_requests;
         ++m_writes;
         if (modbus_write_registers(m_context, address + done, n, values.data() + done) != n) {
-            *error = failure(QStringLiteral("writing"), address + done, n);
+            const int code = errno;
+            *error = failure(code, QStringLiteral("writing"), address + done, n);
             return false;
         }
         done += n;

@@ -46,7 +46,9 @@ public:
     int writeRequests() const { return m_writes; }
 
 private:
-    QString failure(const QString& what, int address, int count);
+    /// The message for a failed request (errno `code`); closes the link
+    /// unless the device answered with a Modbus exception.
+    QString failure(int code, const QString& what, int address, int count);
 
     ModbusUrl m_url;
     double m_timeout_s;

@@ -27,7 +27,8 @@ TablePush::TablePush(modbus::ModbusUrl url, PushOptions options)
 PushResult TablePush::push(const compensation::CompensationTable& table) {
     m_result = PushResult{};
     m_result.controller = m_link.url().toString();
-    m_finished = false;
+    m_identity = {};
+    m_before = m_sent = TableImage{};
     QElapsedTimer timer;
     timer.start();
     try {

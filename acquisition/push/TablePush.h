@@ -81,8 +81,7 @@ private:
     Identity m_identity;
     TableImage m_before;  ///< the active table read in step 1: what a rollback restores
     TableImage m_sent;
-    QString m_stepName;
-    bool m_finished = false;
+    QString m_stepName;  ///< the step under way, named when the link fails in it
 };
 
 /// One push with its own connection (see TablePush).
