@@ -10,6 +10,8 @@ using namespace driftlab::test;
 
 namespace {
 
+const auto kNext = pushTable(21, 35, 6, 0.7);
+
 /// A controller with table v1 applied; the faults come after it.
 struct ControllerWithTable {
     std::unique_ptr<SimulatedController> controller = startController();
@@ -19,13 +21,16 @@ struct ControllerWithTable {
         const PushResult result = pushTable(urlOf(*controller), first, testOptions());
         EXPECT_TRUE(result.ok()) << qPrintable(result.message);
     }
+    /// Pushes the next table with `faults` injected from now on.
+    PushResult pushWith(const ControllerFaults& faults) const {
+        controller->setFaults(faults);
+        return pushTable(urlOf(*controller), kNext, testOptions());
+    }
     void expectFirstTableIntact() const {
         EXPECT_EQ(readActiveOverModbus(*controller), imageOf(first, 1));
         EXPECT_EQ(controller->registerValue(reg::kActiveVersion), 1);
     }
 };
-
-const auto kNext = pushTable(21, 35, 6, 0.7);
 
 }  // namespace
 
@@ -36,8 +41,7 @@ TEST_P(DroppedConnection, reconnectsAbortsAndFindsThePreviousTableIntact) {
     ControllerWithTable setup;
     ControllerFaults faults;
     faults.drop_after_writes = GetParam();
-    setup.controller->setFaults(faults);
-    const PushResult result = pushTable(urlOf(*setup.controller), kNext, testOptions());
+    const PushResult result = setup.pushWith(faults);
     EXPECT_EQ(result.outcome, PushOutcome::Failed);
     EXPECT_TRUE(
         result.message.contains(QStringLiteral("reconnected and aborted, the previous "
@@ -64,8 +68,7 @@ TEST(PushFault, refusedCommitAbortsAndKeepsThePreviousTable) {
     ControllerWithTable setup;
     ControllerFaults faults;
     faults.refuse_commit = true;
-    setup.controller->setFaults(faults);
-    const PushResult result = pushTable(urlOf(*setup.controller), kNext, testOptions());
+    const PushResult result = setup.pushWith(faults);
     EXPECT_EQ(result.outcome, PushOutcome::Refused);
     EXPECT_EQ(result.message, QStringLiteral("127.0.0.1:%1 answered 'refused by the controller' "
                                              "to table v2; aborted, the previous table (v1) is "
@@ -78,8 +81,7 @@ TEST(PushFault, corruptedActiveTableIsRolledBackToThePreviousOne) {
     ControllerWithTable setup;
     ControllerFaults faults;
     faults.corrupt_after_apply = true;
-    setup.controller->setFaults(faults);
-    const PushResult result = pushTable(urlOf(*setup.controller), kNext, testOptions());
+    const PushResult result = setup.pushWith(faults);
     EXPECT_EQ(result.outcome, PushOutcome::RolledBack);
     // The simulated fault flips a bit of the middle point (register 1100 + 10).
     EXPECT_TRUE(
