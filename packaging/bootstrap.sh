@@ -2,7 +2,8 @@
 # DriftLab set-up on Debian 12: installs the packages it needs (skipping those
 # present), builds, then runs one job.
 #
-#   bash packaging/bootstrap.sh main    the main job: simulated campaigns, stored, modelled, compared, diagnosed
+#   bash packaging/bootstrap.sh main    the main job: simulated campaigns, stored, modelled, compared, diagnosed,
+#                                       compensated and pushed to a simulated controller
 #   bash packaging/bootstrap.sh test    every test (ctest, offscreen)
 #   bash packaging/bootstrap.sh build   install and build only
 #
@@ -43,12 +44,37 @@ build_project() {
     cmake --build "$build" --parallel "${DRIFTLAB_JOBS:-2}"
 }
 
+# Starts `controller-sim` on a free port, pushes S1's table to it from the
+# store, lists the push history and stops the simulator (also when a step fails).
+push_to_simulated_controller() {
+    local cli=$1 out=$2 id=$3 sim_pid port=""
+    "$cli" controller-sim --port 0 >"$out/controller-sim.out" 2>"$out/controller-sim.err" &
+    sim_pid=$!
+    # errexit leaves the script from inside this function: stop the simulator on exit too.
+    trap "kill $sim_pid 2>/dev/null || true" EXIT
+    for _ in $(seq 100); do
+        port=$(sed -n 's#.*modbus://127\.0\.0\.1:\([0-9]*\).*#\1#p' "$out/controller-sim.out")
+        [[ -n $port ]] && break
+        kill -0 "$sim_pid" 2>/dev/null || break
+        sleep 0.1
+    done
+    if [[ -z $port ]]; then
+        log "the simulated controller did not start: $(cat "$out/controller-sim.err")"; return 1
+    fi
+    "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --spacing 30 \
+        --push "modbus://127.0.0.1:$port" --max-change-um 50
+    "$cli" pushes --db "$out/driftlab.sqlite" --campaign "$id"
+    kill -TERM "$sim_pid" && wait "$sim_pid"
+    trap - EXIT
+    cat "$out/controller-sim.err" >&2
+}
+
 run_main_job() {
     local cli=$build/app/driftlab-cli out=$build/main-job
     rm -rf "$out" && mkdir -p "$out"
-    log "main job 1/9: simulating a five-state campaign on the built-in rig"
+    log "main job 1/10: simulating a five-state campaign on the built-in rig"
     "$cli" simulate --out "$out/campaign" --plots "$out/plots" --spindle --seed 1 >/dev/null
-    log "main job 2/9: zipping the bundle as a user mails it, importing the zip into $out/driftlab.sqlite (checked, then one transaction)"
+    log "main job 2/10: zipping the bundle as a user mails it, importing the zip into $out/driftlab.sqlite (checked, then one transaction)"
     (cd "$out" && zip -qr campaign.zip campaign)
     local id
     id=$("$cli" import "$out/campaign.zip" --db "$out/driftlab.sqlite")
@@ -57,28 +83,30 @@ run_main_job() {
         log "the same campaign imported twice went unnoticed"; return 1
     fi
     log "the unzipped folder is the same content: $(tail -n 1 "$out/again.err")"
-    log "main job 3/9: heat-transfer model identified on S1, tested on S2-S5 (stored in the database)"
+    log "main job 3/10: heat-transfer model identified on S1, tested on S2-S5 (stored in the database)"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model heat-transfer --train S1
-    log "main job 4/9: the same with the best temperature regression (mlr)"
+    log "main job 4/10: the same with the best temperature regression (mlr)"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model mlr --train S1
-    log "main job 5/9: every model, fitted on each state and scored on every other"
+    log "main job 5/10: every model, fitted on each state and scored on every other"
     "$cli" compare --db "$out/driftlab.sqlite" --campaign "$id"
-    log "main job 6/9: a second campaign with an effect hidden in it (forced convection); the diagnosis must find it"
+    log "main job 6/10: a second campaign with an effect hidden in it (forced convection); the diagnosis must find it"
     "$cli" simulate --out "$out/hidden" --seed 2 --effect forced_convection=0.05 >/dev/null
     local hidden
     hidden=$("$cli" import "$out/hidden" --db "$out/driftlab.sqlite")
     "$cli" diagnose --db "$out/driftlab.sqlite" --campaign "$hidden" --plots "$out/plots/diagnosis"
-    log "main job 7/9: ISO 230-2 evaluation of S1's interferometer cycles (a moving state: its thermal drift inflates R, as the warning says)"
+    log "main job 7/10: ISO 230-2 evaluation of S1's interferometer cycles (a moving state: its thermal drift inflates R, as the warning says)"
     "$cli" iso230-2 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
-    log "main job 8/9: ISO 230-3 thermal drift of S1's targets and the spindle run's probes: maximum, when, time to stabilise"
+    log "main job 8/10: ISO 230-3 thermal drift of S1's targets and the spindle run's probes: maximum, when, time to stabilise"
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run SP1
-    log "main job 9/9: compensation tables from S1's interferometer readings for LinuxCNC and Sinumerik, in $out/compensation/"
+    log "main job 9/10: compensation tables from S1's interferometer readings for LinuxCNC and Sinumerik, in $out/compensation/"
     mkdir -p "$out/compensation"
     "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --format linuxcnc \
         --spacing 30 --out "$out/compensation/x.comp"
     "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --format sinumerik \
         --spacing 30 --out "$out/compensation/x_eec.ini" >/dev/null
+    log "main job 10/10: S1's table pushed over Modbus TCP to the simulated controller (staged, checksummed, applied, read back), then the push history"
+    push_to_simulated_controller "$cli" "$out" "$id"
     "$cli" export --db "$out/driftlab.sqlite" --campaign "$id" --out "$out/exported" >/dev/null
     log "done: bundle $out/campaign (and .zip), database $out/driftlab.sqlite, exported back to $out/exported, plots in $out/plots"
 }

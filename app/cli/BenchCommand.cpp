@@ -21,6 +21,8 @@ namespace driftlab::cli {
 
 /// ImportThroughput.cpp: `import` of a samples.csv of `megabytes` MB in a child process.
 QJsonObject importFigures(int megabytes, int repetitions);
+/// PushThroughput.cpp: `pushes` pushes of a 256-point table to the simulated controller.
+QJsonObject pushFigures(int pushes);
 
 namespace {
 
@@ -109,6 +111,14 @@ QJsonObject scipyFigures() {
     return {};
 }
 
+void printPushLine(const QJsonObject& push) {
+    printLine(QStringLiteral("push            256-point table to the simulated controller over "
+                             "Modbus TCP, %1 pushes: median %2 ms, worst %3 ms")
+                  .arg(push[QStringLiteral("push_256_count")].toInt())
+                  .arg(push[QStringLiteral("push_256_median_ms")].toDouble(), 0, 'f', 2)
+                  .arg(push[QStringLiteral("push_256_worst_ms")].toDouble(), 0, 'f', 2));
+}
+
 }  // namespace
 
 int benchCommand(const QStringList& args) {
@@ -122,7 +132,28 @@ int benchCommand(const QStringList& args) {
         QStringLiteral("import-mb"),
         QStringLiteral("Size of the samples.csv the import figure uses, MB (0: skip)."),
         QStringLiteral("MB"), QStringLiteral("200")};
-    parseArguments(parser, args, {repeat, noPython, importMb});
+    const QCommandLineOption pushes{
+        QStringLiteral("pushes"),
+        QStringLiteral("Pushes of a 256-point table to the simulated controller (0: skip)."),
+        QStringLiteral("N"), QStringLiteral("50")};
+    const QCommandLineOption only{QStringLiteral("only"),
+                                  QStringLiteral("Measure only this figure: push."),
+                                  QStringLiteral("FIGURE")};
+    parseArguments(parser, args, {repeat, noPython, importMb, pushes, only});
+    const int pushCount = parser.value(pushes).toInt();
+    if (parser.value(only) == QLatin1String("push")) {
+        const QJsonObject figures = pushFigures(std::max(1, pushCount));
+        endProgressLine();
+        if (parser.isSet(QStringLiteral("json")))
+            printJson(figures);
+        else
+            printPushLine(figures);
+        return 0;
+    }
+    if (parser.isSet(only))
+        throw CliError(QStringLiteral("--only: '%1' is not a figure it can measure alone (push)")
+                           .arg(parser.value(only)),
+                       2);
     const int repetitions = std::max(1, parser.value(repeat).toInt());
     // First, while no other child has raised this process's memory high-water marks.
     const int megabytes = parser.value(importMb).toInt();
@@ -140,6 +171,8 @@ int benchCommand(const QStringList& args) {
         figures[it.key()] = it.value();
     figures[QStringLiteral("diagnosis_s")] = diagnosisSeconds();
     for (auto it = import.begin(); it != import.end(); ++it) figures[it.key()] = it.value();
+    const QJsonObject push = pushCount > 0 ? pushFigures(pushCount) : QJsonObject();
+    for (auto it = push.begin(); it != push.end(); ++it) figures[it.key()] = it.value();
     if (!parser.isSet(noPython)) {
         printProgress(QStringLiteral("scipy comparison"), 0);
         const QJsonObject scipy = scipyFigures();
@@ -186,6 +219,7 @@ int benchCommand(const QStringList& args) {
                 .arg(import[QStringLiteral("import_samples_per_s")].toDouble() / 1e6, 0, 'f', 2)
                 .arg(import[QStringLiteral("import_peak_rss_mb")].toDouble(), 0, 'f', 0)
                 .arg(import[QStringLiteral("import_peak_memory_ratio")].toDouble(), 0, 'f', 2));
+    if (!push.isEmpty()) printPushLine(push);
     return 0;
 }
 

@@ -16,6 +16,8 @@ int iso230Command(const QStringList& args);
 int iso230_3Command(const QStringList& args);
 int compensateCommand(const QStringList& args);
 int liveCommand(const QStringList& args);
+int controllerSimCommand(const QStringList& args);
+int pushesCommand(const QStringList& args);
 
 namespace {
 
@@ -83,11 +85,19 @@ const std::vector<Command>& commands() {
          QStringLiteral("ISO 230-3 thermal drift: per target of a moving run, per probe of a "
                         "spindle or ETVE run, the maximum drift, when, and when it stabilised.")},
         {QStringLiteral("compensate"), compensateCommand,
-         QStringLiteral("compensate BUNDLE --format F --out FILE [--spacing MM | --points N] "
-                        "[--bidirectional]"),
+         QStringLiteral("compensate BUNDLE --format F --out FILE | --push modbus://HOST:PORT "
+                        "[--spacing MM | --points N] [--bidirectional]"),
          QStringLiteral("A pitch-error compensation table from a run's positioning readings, "
-                        "written for a controller: linuxcnc, linuxcnc-type1, fanuc, fanuc-g10, "
-                        "sinumerik, heidenhain, csv (--push over Modbus: not built yet).")},
+                        "written for a controller (linuxcnc, linuxcnc-type1, fanuc, fanuc-g10, "
+                        "sinumerik, heidenhain, csv) and/or pushed to it over Modbus TCP.")},
+        {QStringLiteral("pushes"), pushesCommand,
+         QStringLiteral("pushes --db FILE [--campaign ID]"),
+         QStringLiteral("The compensation push history of a store: when, which table, which "
+                        "controller, what happened.")},
+        {QStringLiteral("controller-sim"), controllerSimCommand,
+         QStringLiteral("controller-sim [--port N] [--state S] [--fault F]..."),
+         QStringLiteral("Serve the simulated controller of DriftLab's Modbus register map until "
+                        "Ctrl-C (for trying the push and the map).")},
         {QStringLiteral("live"), liveCommand,
          QStringLiteral("live BUNDLE --run R --train R,.. [--interval-s S] [--cutting FROM-TO,..]"),
          QStringLiteral("Live thermal compensation replayed on a measured run: the heat-transfer "

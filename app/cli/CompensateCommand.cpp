@@ -7,6 +7,7 @@
 
 #include "app/cli/CliCommon.h"
 #include "app/cli/CommandTable.h"
+#include "app/cli/CompensationPush.h"
 #include "core/compensation/CsvExport.h"
 #include "core/compensation/FanucExport.h"
 #include "core/compensation/HeidenhainExport.h"
@@ -76,12 +77,6 @@ QString um(double value) {
 }  // namespace
 
 int compensateCommand(const QStringList& args) {
-    // --push is part of the command line scripts will use; until the Modbus
-    // push is built it is refused as a command not built (exit 3).
-    for (const QString& arg : args)
-        if (arg == QLatin1String("--push") || arg.startsWith(QLatin1String("--push=")))
-            throw CliError(QStringLiteral("--push: ") + notBuiltReason(), 3);
-
     QCommandLineParser parser;
     const QCommandLineOption format{
         QStringLiteral("format"),
@@ -130,17 +125,23 @@ int compensateCommand(const QStringList& args) {
         QStringLiteral("magnification"),
         QStringLiteral("Fanuc pitch error compensation magnification, parameter 3623 (default 1)."),
         QStringLiteral("N"), QStringLiteral("1")};
-    const QCommandLineOption push{QStringLiteral("push"),
-                                  QStringLiteral("Push the table over Modbus TCP (not built yet)."),
-                                  QStringLiteral("modbus://HOST:PORT")};
     parseArguments(parser, args,
-                   campaignSourceOptions()
-                       << format << out << runOption << spacing << points << start << end
-                       << bidirectional << maxValue << maxStep << axis << magnification << push,
-                   campaignSourceArguments({format, out}));
+                   campaignSourceOptions() << format << out << runOption << spacing << points
+                                           << start << end << bidirectional << maxValue << maxStep
+                                           << axis << magnification << pushOptions(),
+                   campaignSourceArguments());
 
+    // A file, a push, or both; the push options are checked before any work.
+    const std::optional<PushPlan> plan = planPush(parser);
+    const bool writeFile = parser.isSet(format) || parser.isSet(out);
+    if (!plan && !writeFile)
+        throw CliError(QStringLiteral("give --format F --out FILE, --push modbus://HOST:PORT, or "
+                                      "both"),
+                       2);
+    if (writeFile && !(parser.isSet(format) && parser.isSet(out)))
+        throw CliError(QStringLiteral("--format and --out go together"), 2);
     const QString formatName = parser.value(format);
-    if (!kFormats.contains(formatName))
+    if (writeFile && !kFormats.contains(formatName))
         throw CliError(QStringLiteral("--format: '%1' is not one of %2")
                            .arg(formatName, kFormats.join(QStringLiteral(", "))),
                        2);
@@ -169,7 +170,9 @@ int compensateCommand(const QStringList& args) {
                            .arg(parser.value(magnification)),
                        2);
 
-    const Campaign campaign = loadCampaignSource(parser);
+    // A push is recorded in the --db store: open it for writing from the start.
+    const Campaign campaign =
+        loadCampaignSource(parser, plan ? db::StoreAccess::ReadWrite : db::StoreAccess::ReadOnly);
     const Run& run = choosePositioningRun(campaign, parser.value(runOption));
     const QString source = QStringLiteral("run %1 of %2").arg(run.id, campaign.name);
     const iso::Evaluation evaluation = iso::evaluate(iso::readingsOf(run));
@@ -177,33 +180,49 @@ int compensateCommand(const QStringList& args) {
     const TableResult built = buildTable(evaluation, settings, limits);
     if (!built.ok()) throw CliError(source + QStringLiteral(": ") + built.error);
     const CompensationTable& table = built.table;
-    const ExportResult exported =
-        exportTable(table, formatName, parser.value(axis), campaign, magnificationValue);
-    if (!exported.ok()) throw CliError(formatName + QStringLiteral(": ") + exported.error);
-    writeAtomically(parser.value(out), exported.text);
-    printWarnings(evaluation.warnings + built.warnings + exported.warnings);
+    QStringList warnings = evaluation.warnings + built.warnings;
+    if (writeFile) {
+        const ExportResult exported =
+            exportTable(table, formatName, parser.value(axis), campaign, magnificationValue);
+        if (!exported.ok()) throw CliError(formatName + QStringLiteral(": ") + exported.error);
+        writeAtomically(parser.value(out), exported.text);
+        warnings += exported.warnings;
+    }
+    printWarnings(warnings);
+    const bool json = parser.isSet(QStringLiteral("json"));
+    std::optional<push::PushResult> pushed;
+    if (plan) pushed = pushAndRecord(*plan, parser, table, limits, run.id);
+    // The summary first, then the push's failure as the last stderr line.
+    const auto failIfNotApplied = [&] {
+        if (pushed && !pushed->ok())
+            throw CliError(QStringLiteral("push %1: %2")
+                               .arg(push::outcomeName(pushed->outcome), pushed->message));
+    };
 
-    if (parser.isSet(QStringLiteral("json"))) {
-        printJson({{QStringLiteral("source"), source},
-                   {QStringLiteral("run"), run.id},
-                   {QStringLiteral("format"), formatName},
-                   {QStringLiteral("out"), parser.value(out)},
-                   {QStringLiteral("points"), int(table.size())},
-                   {QStringLiteral("start_mm"), table.position_mm.front()},
-                   {QStringLiteral("end_mm"), table.position_mm.back()},
-                   {QStringLiteral("spacing_mm"), table.spacing_mm()},
-                   {QStringLiteral("bidirectional"), table.bidirectional},
-                   {QStringLiteral("max_correction_um"), table.maxAbsCorrectionUm()},
-                   {QStringLiteral("B_mean_um"), jsonNumber(table.mean_reversal_um)},
-                   {QStringLiteral("cycles"), evaluation.cycles},
-                   {QStringLiteral("sign"),
-                    QStringLiteral("correction = -(actual - target), added to the command")}});
+    if (json) {
+        printJson(
+            {{QStringLiteral("source"), source},
+             {QStringLiteral("run"), run.id},
+             {QStringLiteral("format"), writeFile ? QJsonValue(formatName) : QJsonValue()},
+             {QStringLiteral("out"), writeFile ? QJsonValue(parser.value(out)) : QJsonValue()},
+             {QStringLiteral("push"), pushed ? QJsonValue(pushed->toJson()) : QJsonValue()},
+             {QStringLiteral("points"), int(table.size())},
+             {QStringLiteral("start_mm"), table.position_mm.front()},
+             {QStringLiteral("end_mm"), table.position_mm.back()},
+             {QStringLiteral("spacing_mm"), table.spacing_mm()},
+             {QStringLiteral("bidirectional"), table.bidirectional},
+             {QStringLiteral("max_correction_um"), table.maxAbsCorrectionUm()},
+             {QStringLiteral("B_mean_um"), jsonNumber(table.mean_reversal_um)},
+             {QStringLiteral("cycles"), evaluation.cycles},
+             {QStringLiteral("sign"),
+              QStringLiteral("correction = -(actual - target), added to the command")}});
+        failIfNotApplied();
         return 0;
     }
     printLine(QStringLiteral("%1 table from %2 (ISO 230-2 mean deviations over %3 cycles) → %4")
-                  .arg(formatName, source)
+                  .arg(writeFile ? formatName : QStringLiteral("compensation"), source)
                   .arg(evaluation.cycles)
-                  .arg(QFileInfo(parser.value(out)).fileName()));
+                  .arg(writeFile ? QFileInfo(parser.value(out)).fileName() : plan->url.toString()));
     printLine(QStringLiteral("points: %1, %2 to %3 mm every %4 mm, %5")
                   .arg(table.size())
                   .arg(table.position_mm.front(), 0, 'f', 3)
@@ -215,6 +234,8 @@ int compensateCommand(const QStringList& args) {
                              "commanded position)")
                   .arg(um(table.maxAbsCorrectionUm())));
     printLine(QStringLiteral("backlash: mean reversal B̄ = %1").arg(um(table.mean_reversal_um)));
+    if (pushed) printPush(*plan, *pushed);
+    failIfNotApplied();
     return 0;
 }
 

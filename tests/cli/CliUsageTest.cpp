@@ -16,8 +16,8 @@ using namespace driftlab::test;
 namespace {
 
 const QStringList kNotBuilt{"run", "report", "batch"};
-const QStringList kBuilt{"import",  "export",   "info",     "simulate", "fit",
-                         "compare", "diagnose", "iso230-2", "bench",    "compensate"};
+const QStringList kBuilt{"import",   "export",   "info",  "simulate",   "fit",    "compare",
+                         "diagnose", "iso230-2", "bench", "compensate", "pushes", "controller-sim"};
 
 QJsonObject json(const CliResult& r) {
     return QJsonDocument::fromJson(r.out).object();

@@ -1,7 +1,7 @@
 // driftlab-cli compensate as a test engineer uses it on the example bundle:
 // every format written, the LinuxCNC file as LinuxCNC reads it, the CSV equal
 // to minus the ISO 230-2 mean deviations, and refusals that name the point
-// and value (a limit), the missing readings, or the command not built (--push).
+// and value (a limit) or the missing readings. The push: PushCliTest.cpp.
 
 #include <gtest/gtest.h>
 
@@ -178,13 +178,6 @@ TEST(CompensateCli, runWithoutPositioningReadingsIsAClearError) {
         {"compensate", bundle, "--run", "S1", "--format", "csv", "--out", dir.filePath("x.csv")});
     EXPECT_EQ(reason(named.err),
               QByteArray("driftlab-cli compensate: run S1 has no positioning readings"));
-}
-
-TEST(CompensateCli, pushIsNotBuiltYet) {
-    const CliResult r = compensate({"--push", "modbus://127.0.0.1:502"});
-    EXPECT_EQ(r.exitCode, 3);
-    EXPECT_EQ(r.err,
-              "driftlab-cli compensate: --push: not built yet in DriftLab " DRIFTLAB_VERSION "\n");
 }
 
 TEST(CompensateCli, unknownFormatIsAUsageError) {

@@ -8,6 +8,7 @@
 
 #include "core/bundle/BundleReader.h"
 #include "db/CampaignStore.h"
+#include "db/PushHistory.h"
 #include "db/SchemaMigrations.h"
 #include "tests/core/BundleTestSupport.h"
 
@@ -166,4 +167,61 @@ TEST(SchemaMigration, aSchemaV2StoreKeepsEverySampleWhenItsRowsMoveIntoBlocks) {
     QSqlQuery gone(store->database());
     EXPECT_FALSE(gone.exec(QStringLiteral("SELECT count(*) FROM sample")))
         << "the per-value table is dropped";
+}
+
+// Schema v4 replaced v2's compensation_push (a push hung on a stored table row)
+// by the push history; a v3 store's pushes come through with what they knew.
+TEST(SchemaMigration, aSchemaV3StoreKeepsItsPushesInTheV4History) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("v3.sqlite"));
+    {
+        QSqlDatabase db =
+            QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("v3-writer"));
+        db.setDatabaseName(path);
+        ASSERT_TRUE(db.open());
+        QString error;
+        ASSERT_TRUE(db::migrate(db, &error, 3)) << qPrintable(error);
+        QSqlQuery q(db);
+        for (const char* sql :
+             {"INSERT INTO campaign (id, name, nut_length_mm, travel_from_mm, travel_to_mm) "
+              "VALUES (1, 'v3 campaign', 80, 0, 700)",
+              "INSERT INTO compensation_table (id, campaign_id, axis, start_mm, spacing_mm, "
+              "values_um_json) VALUES (5, 1, 'X', 0, 350, '[-1.5,0.25,2]')",
+              "INSERT INTO compensation_push (id, table_id, target, outcome, message, pushed_at) "
+              "VALUES (1, 5, 'modbus://plc:502', 'rolled_back', 'read-back mismatch', "
+              "'2024-05-01T10:00:00.000Z')"})
+            ASSERT_TRUE(q.exec(QString::fromLatin1(sql)))
+                << sql << " " << qPrintable(q.lastError().text());
+        db.close();
+        db = QSqlDatabase();
+        QSqlDatabase::removeDatabase(QStringLiteral("v3-writer"));
+    }
+    QString error;
+    auto store = CampaignStore::open(path, db::StoreAccess::ReadWrite, &error);
+    ASSERT_TRUE(store) << qPrintable(error);
+    EXPECT_EQ(db::schemaVersion(store->database()), 4);
+    auto pushes = db::pushHistory(*store, 1, &error);
+    ASSERT_TRUE(pushes) << qPrintable(error);
+    ASSERT_EQ(pushes->size(), 1u);
+    const db::PushRecord& old = pushes->front();
+    EXPECT_EQ(old.pushed_at, QStringLiteral("2024-05-01T10:00:00.000Z"));
+    EXPECT_EQ(old.campaign_id, std::optional<qint64>(1));
+    EXPECT_EQ(old.controller_url, QStringLiteral("modbus://plc:502"));
+    EXPECT_EQ(old.result, QStringLiteral("rolled_back"));
+    EXPECT_EQ(old.message, QStringLiteral("read-back mismatch"));
+    EXPECT_EQ(old.points, 3);
+    EXPECT_EQ(old.table[QStringLiteral("spacing_mm")].toDouble(), 350);
+    EXPECT_EQ(old.table[QStringLiteral("correction_um")].toArray().at(1).toDouble(), 0.25);
+
+    // A push from a bundle folder has no campaign in the store.
+    db::PushRecord fromBundle;
+    fromBundle.controller_url = QStringLiteral("modbus://127.0.0.1:1502");
+    fromBundle.result = QStringLiteral("applied");
+    fromBundle.points = 21;
+    ASSERT_TRUE(db::storePush(*store, fromBundle, &error)) << qPrintable(error);
+    pushes = db::pushHistory(*store, std::nullopt, &error);
+    ASSERT_TRUE(pushes) << qPrintable(error);
+    ASSERT_EQ(pushes->size(), 2u);
+    EXPECT_FALSE(pushes->back().campaign_id);
+    EXPECT_TRUE(pushes->back().pushed_at.endsWith(QLatin1Char('Z')));
 }

@@ -1,0 +1,114 @@
+#include "acquisition/modbus/ModbusTcpLink.h"
+
+#include <modbus.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+
+namespace driftlab::modbus {
+namespace {
+
+void splitSeconds(double seconds, std::uint32_t* whole, std::uint32_t* micro) {
+    const double clamped = std::clamp(seconds, 0.001, 3600.0);
+    *whole = std::uint32_t(clamped);
+    *micro = std::uint32_t(std::lround((clamped - *whole) * 1e6)) % 1000000u;
+}
+
+}  // namespace
+
+ModbusTcpLink::ModbusTcpLink(ModbusUrl url, double response_timeout_s)
+    : m_url(std::move(url)), m_timeout_s(response_timeout_s) {}
+
+ModbusTcpLink::~ModbusTcpLink() {
+    close();
+}
+
+void ModbusTcpLink::close() {
+    if (!m_context) return;
+    modbus_close(m_context);
+    modbus_free(m_context);
+    m_context = nullptr;
+    m_connected = false;
+}
+
+bool ModbusTcpLink::connect(QString* error) {
+    close();
+    // The _pi variant resolves host names as well as IPv4/IPv6 literals.
+    const QByteArray host = m_url.host.toUtf8();
+    const QByteArray service = QByteArray::number(m_url.port);
+    m_context = modbus_new_tcp_pi(host.constData(), service.constData());
+    if (!m_context) {
+        *error = QStringLiteral("%1: cannot create a Modbus context: %2")
+                     .arg(m_url.endpoint(), QString::fromLocal8Bit(modbus_strerror(errno)));
+        return false;
+    }
+    std::uint32_t seconds = 0, micro = 0;
+    splitSeconds(m_timeout_s, &seconds, &micro);
+    // libmodbus bounds the TCP connect by the response timeout too.
+    modbus_set_response_timeout(m_context, seconds, micro);
+    modbus_set_slave(m_context, m_url.unit);
+    if (modbus_connect(m_context) == -1) {
+        *error = QStringLiteral("%1: cannot connect: %2")
+                     .arg(m_url.endpoint(), QString::fromLocal8Bit(modbus_strerror(errno)));
+        close();
+        return false;
+    }
+    m_connected = true;
+    return true;
+}
+
+QString ModbusTcpLink::failure(int code, const QString& what, int address, int count) {
+    const QString text = QStringLiteral("%1: %2 registers %3–%4: %5")
+                             .arg(m_url.endpoint(), what)
+                             .arg(address)
+                             .arg(address + count - 1)
+                             .arg(QString::fromLocal8Bit(modbus_strerror(code)));
+    // A Modbus exception is an answer; anything else (reset, timeout, a
+    // response out of step) leaves the stream unusable until reconnected.
+    if (code < MODBUS_ENOBASE) close();
+    return text;
+}
+
+bool ModbusTcpLink::readRegisters(int address, int count, std::vector<std::uint16_t>& out,
+                                  QString* error) {
+    out.assign(std::size_t(std::max(count, 0)), 0);
+    if (!m_connected) {
+        *error = QStringLiteral("%1: not connected").arg(m_url.endpoint());
+        return false;
+    }
+    for (int done = 0; done < count;) {
+        const int n = std::min(kMaxReadRegisters, count - done);
+        ++m_requests;
+        if (modbus_read_registers(m_context, address + done, n, out.data() + done) != n) {
+            const int code = errno;
+            *error = failure(code, QStringLiteral("reading"), address + done, n);
+            return false;
+        }
+        done += n;
+    }
+    return true;
+}
+
+bool ModbusTcpLink::writeRegisters(int address, std::span<const std::uint16_t> values,
+                                   QString* error) {
+    if (!m_connected) {
+        *error = QStringLiteral("%1: not connected").arg(m_url.endpoint());
+        return false;
+    }
+    const int count = int(values.size());
+    for (int done = 0; done < count;) {
+        const int n = std::min(kMaxWriteRegisters, count - done);
+        ++m_requests;
+        ++m_writes;
+        if (modbus_write_registers(m_context, address + done, n, values.data() + done) != n) {
+            const int code = errno;
+            *error = failure(code, QStringLiteral("writing"), address + done, n);
+            return false;
+        }
+        done += n;
+    }
+    return true;
+}
+
+}  // namespace driftlab::modbus

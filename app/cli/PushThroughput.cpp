@@ -1,0 +1,45 @@
+// bench: the compensation push of a 256-point table to the simulated
+// controller on 127.0.0.1 over real Modbus TCP, median and worst of many
+// pushes (each one connects, stages, commits, waits and reads back).
+#include <QElapsedTimer>
+#include <algorithm>
+#include <cmath>
+
+#include "acquisition/push/TablePush.h"
+#include "acquisition/sim/SimulatedController.h"
+#include "app/cli/CliCommon.h"
+
+namespace driftlab::cli {
+
+QJsonObject pushFigures(int pushes) {
+    push::SimulatedController controller;
+    QString error;
+    if (!controller.start(&error)) throw CliError(QStringLiteral("push bench: ") + error);
+    // Two tables in turn, so that every push really changes the active table.
+    compensation::CompensationTable tables[2];
+    for (int k = 0; k < 2; ++k)
+        for (int i = 0; i < 256; ++i) {
+            const double value = (k ? 6 : 8) * std::sin(0.05 * i);
+            tables[k].position_mm.push_back(i * 2.5);
+            tables[k].correction_plus_um.push_back(value);
+            tables[k].correction_minus_um.push_back(value);
+        }
+    const modbus::ModbusUrl url{QStringLiteral("127.0.0.1"), controller.port(), 1};
+    std::vector<double> ms;
+    for (int n = 0; n < pushes; ++n) {
+        QElapsedTimer timer;
+        timer.start();
+        const push::PushResult result = push::pushTable(url, tables[n % 2]);
+        ms.push_back(timer.nsecsElapsed() * 1e-6);
+        if (!result.ok()) throw CliError(QStringLiteral("push bench: ") + result.message);
+        printProgress(QStringLiteral("push"), (n + 1.0) / pushes);
+    }
+    std::sort(ms.begin(), ms.end());
+    const double median =
+        ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
+    return {{QStringLiteral("push_256_median_ms"), median},
+            {QStringLiteral("push_256_worst_ms"), ms.back()},
+            {QStringLiteral("push_256_count"), pushes}};
+}
+
+}  // namespace driftlab::cli
