@@ -17,20 +17,6 @@ QString mm(double value) {
 
 }  // namespace
 
-QString describe(MachineState state) {
-    switch (state) {
-        case MachineState::Idle:
-            return QStringLiteral("idle");
-        case MachineState::Moving:
-            return QStringLiteral("moving");
-        case MachineState::Cutting:
-            return QStringLiteral("cutting");
-        case MachineState::ToolChange:
-            return QStringLiteral("tool change");
-    }
-    return QStringLiteral("state %1").arg(int(state));
-}
-
 QString describe(CommitStatus status) {
     switch (status) {
         case CommitStatus::Nothing:

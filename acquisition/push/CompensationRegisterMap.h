@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/compensation/CompensationTable.h"
+#include "core/domain/MachineState.h"
 
 namespace driftlab::push {
 
@@ -42,7 +43,6 @@ inline constexpr int kMaxCapacity = 256;
 inline constexpr int kHeaderCount = 8;
 inline constexpr std::uint16_t kFlagBidirectional = 1;
 
-enum class MachineState : std::uint16_t { Idle = 0, Moving = 1, Cutting = 2, ToolChange = 3 };
 enum class CommitStatus : std::uint16_t {
     Nothing = 0,
     Staged = 1,
@@ -54,7 +54,6 @@ enum class CommitStatus : std::uint16_t {
 };
 enum class Command : std::uint16_t { Commit = 1, Abort = 2, RollBack = 3 };
 
-QString describe(MachineState state);
 QString describe(CommitStatus status);
 
 /// A table as registers: the header (version … checksum) and the data columns.

@@ -88,7 +88,7 @@ void TablePush::run(const compensation::CompensationTable& table) {
     step(m_stepName, true,
          QStringLiteral("map v1, capacity %1 points, machine %2, active table v%3")
              .arg(m_identity.capacity)
-             .arg(describe(m_identity.state))
+             .arg(machineStateName(m_identity.state))
              .arg(m_identity.active));
 
     m_stepName = QStringLiteral("read_active");
@@ -171,7 +171,7 @@ void TablePush::awaitAck() {
         if (now.ack == m_result.version && now.status != CommitStatus::Staged) {
             const QString answer = describe(now.status);
             step(m_stepName, now.status == CommitStatus::Applied,
-                 QStringLiteral("%1 (machine %2)").arg(answer, describe(now.state)));
+                 QStringLiteral("%1 (machine %2)").arg(answer, machineStateName(now.state)));
             if (now.status == CommitStatus::Applied) return readBack();
             const PushOutcome outcome =
                 now.status == CommitStatus::Refused ? PushOutcome::Refused : PushOutcome::Failed;
@@ -186,13 +186,13 @@ void TablePush::awaitAck() {
                                     "status: %4)")
                                     .arg(m_result.version)
                                     .arg(m_options.ack_timeout_s)
-                                    .arg(describe(now.state), describe(now.status));
+                                    .arg(machineStateName(now.state), describe(now.status));
             step(m_stepName, false, why);
             return abortAndVerify(PushOutcome::Failed, why);
         }
         if (cancelled(0.7 + 0.2 * waited_s / m_options.ack_timeout_s,
                       QStringLiteral("waiting for the controller (machine %1)")
-                          .arg(describe(now.state)))) {
+                          .arg(machineStateName(now.state)))) {
             step(m_stepName, false, QStringLiteral("cancelled"));
             return abortAndVerify(PushOutcome::Failed,
                                   QStringLiteral("cancelled while waiting for the controller"));

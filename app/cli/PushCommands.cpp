@@ -12,8 +12,6 @@
 namespace driftlab::cli {
 namespace {
 
-using push::MachineState;
-
 MachineState machineState(const QString& name) {
     const QStringList names{QStringLiteral("idle"), QStringLiteral("moving"),
                             QStringLiteral("cutting"), QStringLiteral("tool-change")};
@@ -100,7 +98,7 @@ int controllerSimCommand(const QStringList& args) {
                                  "(capacity %2, machine %3); stop with Ctrl-C")
                       .arg(controller.url())
                       .arg(options.capacity)
-                      .arg(push::describe(options.state)));
+                      .arg(machineStateName(options.state)));
     std::fflush(stdout);
     int received = 0;
     sigwait(&stopSignals, &received);

@@ -27,7 +27,7 @@ inline QString machineStateName(MachineState state) {
         case MachineState::ToolChange:
             return QStringLiteral("tool change");
     }
-    return QStringLiteral("unknown");
+    return QStringLiteral("state %1").arg(int(state));
 }
 
 }  // namespace driftlab

@@ -32,7 +32,7 @@ QString importExample(const QTemporaryDir& dir) {
     return QString::fromUtf8(r.out.trimmed());
 }
 
-std::unique_ptr<push::SimulatedController> controller(push::MachineState state) {
+std::unique_ptr<push::SimulatedController> controller(driftlab::MachineState state) {
     push::SimulatedControllerOptions options;
     options.state = state;
     auto sim = std::make_unique<push::SimulatedController>(options);
@@ -53,7 +53,7 @@ TEST(PushCli, pushFromTheStoreIsAppliedAndRecordedInItsHistory) {
     QTemporaryDir dir;
     const QString db = dir.filePath("store.sqlite");
     const QString id = importExample(dir);
-    auto sim = controller(push::MachineState::Idle);
+    auto sim = controller(driftlab::MachineState::Idle);
     const CliResult r = runCli({"compensate", "--db", db, "--campaign", id, "--run", "S1",
                                 "--spacing", "35", "--push", sim->url(), "--json"});
     ASSERT_EQ(r.exitCode, 0) << r.err.constData();
@@ -87,7 +87,7 @@ TEST(PushCli, machineThatKeepsCuttingFailsThePushWithOneLineAndIsRecorded) {
     QTemporaryDir dir;
     const QString db = dir.filePath("store.sqlite");
     const QString id = importExample(dir);
-    auto sim = controller(push::MachineState::Cutting);
+    auto sim = controller(driftlab::MachineState::Cutting);
     const CliResult r = runCli({"compensate", "--db", db, "--campaign", id, "--push", sim->url(),
                                 "--timeout-s", "0.2", "--json"});
     EXPECT_EQ(r.exitCode, 1);
@@ -110,7 +110,7 @@ TEST(PushCli, pushFromABundleIsRecordedOnlyInAGivenHistory) {
     QTemporaryDir dir;
     importExample(dir);
     const QString db = dir.filePath("store.sqlite");
-    auto sim = controller(push::MachineState::Idle);
+    auto sim = controller(driftlab::MachineState::Idle);
     const CliResult plain = runCli({"compensate", exampleBundlePath(), "--push", sim->url()});
     ASSERT_EQ(plain.exitCode, 0) << plain.err.constData();
     EXPECT_TRUE(plain.out.contains("push to " + sim->url().toUtf8() + ": applied\n"))
