@@ -4,9 +4,12 @@
 // update it applies (only between cuts, limited per update) is printed and,
 // with --push, written to the controller's live-offset registers. The
 // corrections are scored against the thermal error measured in that run.
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QRegularExpression>
+#include <QThread>
 
+#include "acquisition/live/LiveOffsetWriter.h"
 #include "app/cli/CliCommon.h"
 #include "core/compensation/LiveReplay.h"
 #include "core/models/HeatTransferModel.h"
@@ -72,9 +75,24 @@ int liveCommand(const QStringList& args) {
         QStringLiteral("Time windows of the run in which the machine is cutting, FROM-TO s, "
                        "comma-separated (default: none; with --push the controller says)."),
         QStringLiteral("WINDOWS")};
+    const QCommandLineOption push{
+        QStringLiteral("push"),
+        QStringLiteral("Write each update to the controller's live-offset registers (block 3 of "
+                       "docs/modbus-register-map.md) and take the machine state from it."),
+        QStringLiteral("modbus://HOST:PORT")};
+    const QCommandLineOption staleAfter{
+        QStringLiteral("live-timeout-s"),
+        QStringLiteral("With --push: the controller flags the offset stale after this long "
+                       "without an update (default 600)."),
+        QStringLiteral("S"), QStringLiteral("600")};
+    const QCommandLineOption speedup{
+        QStringLiteral("speedup"),
+        QStringLiteral("Replay N times faster than the run was logged (default: as fast as "
+                       "possible)."),
+        QStringLiteral("N")};
     parseArguments(parser, args,
                    campaignSourceOptions() << runOption << train << interval << position << points
-                                           << maxChange << cutting,
+                                           << maxChange << cutting << push << staleAfter << speedup,
                    campaignSourceArguments({runOption, train}));
     const QString runId = parser.value(runOption);
     const QStringList trainRuns = runList(parser.value(train));
@@ -115,14 +133,48 @@ int liveCommand(const QStringList& args) {
         parser.isSet(position) ? numberOption(parser, position) : (lo + hi) / 2;
 
     const auto windows = cuttingWindows(parser.value(cutting));
+    if (parser.isSet(push) && parser.isSet(cutting))
+        throw CliError(QStringLiteral("--cutting goes without --push: the controller says when it "
+                                      "cuts"),
+                       2);
+    const double speedupFactor = parser.isSet(speedup) ? positiveNumberOption(parser, speedup) : 0;
+    std::unique_ptr<live::LiveOffsetWriter> controller;
+    if (parser.isSet(push)) {
+        QString error;
+        const auto url = modbus::parseModbusUrl(parser.value(push), &error);
+        if (!url) throw CliError(QStringLiteral("--push: ") + error, 2);
+        controller =
+            std::make_unique<live::LiveOffsetWriter>(*url, 2.0, parser.value(staleAfter).toInt());
+        if (!controller->open(&error)) throw CliError(QStringLiteral("--push: ") + error);
+    }
+    QString controllerError;
+    int written = 0;  // updates the controller took
+    QElapsedTimer wall;
+    wall.start();
     const std::vector<MotionSegment> motion = replayed.motion;
     options.state_at = [&](double t_s) {
+        if (speedupFactor > 0) {
+            const qint64 due_ms = qint64(t_s * 1000 / speedupFactor);
+            if (due_ms > wall.elapsed()) QThread::msleep(quint64(due_ms - wall.elapsed()));
+        }
+        if (controller && controllerError.isEmpty()) {
+            // A controller that stops answering is read as cutting: nothing
+            // is applied, and the replay stops at the next update.
+            const auto state = controller->machineState(&controllerError);
+            return state.value_or(MachineState::Cutting);
+        }
         for (const auto& [from, to] : windows)
             if (t_s > from && t_s <= to) return MachineState::Cutting;
         return compensation::stateFromMotion(motion, t_s);
     };
     const bool json = parser.isSet(QStringLiteral("json"));
     options.on_update = [&](const LiveUpdate& u) {
+        if (controller) {
+            if (!controllerError.isEmpty() ||
+                !controller->publish(u.offset_um, true, &controllerError))
+                return false;
+            ++written;
+        }
         if (!json)
             printLine(QStringLiteral("%1 s  offset %2 µm at %3 mm%4%5")
                           .arg(u.time_s, 8, 'f', 0)
@@ -138,21 +190,27 @@ int liveCommand(const QStringList& args) {
     const compensation::LiveReplayResult result =
         compensation::replayLive(replayed, *screw, options);
     if (!result.ok()) throw CliError(result.error);
+    if (!controllerError.isEmpty())
+        throw CliError(QStringLiteral("--push: after %1 updates written: %2")
+                           .arg(written)
+                           .arg(controllerError));
 
     const double gain =
         result.rms_before_um > 0 ? 1 - result.rms_after_um / result.rms_before_um : 0;
     if (json) {
         QJsonArray updates;
         for (const LiveUpdate& u : result.updates) updates.append(updateJson(u));
-        printJson({{QStringLiteral("run"), runId},
-                   {QStringLiteral("train_runs"), QJsonArray::fromStringList(trainRuns)},
-                   {QStringLiteral("interval_s"), options.settings.update_interval_s},
-                   {QStringLiteral("offset_position_mm"), options.settings.offset_position_mm},
-                   {QStringLiteral("updates"), updates},
-                   {QStringLiteral("readings"), int(result.readings)},
-                   {QStringLiteral("rms_before_um"), result.rms_before_um},
-                   {QStringLiteral("rms_after_um"), result.rms_after_um},
-                   {QStringLiteral("reduction"), gain}});
+        printJson(
+            {{QStringLiteral("run"), runId},
+             {QStringLiteral("train_runs"), QJsonArray::fromStringList(trainRuns)},
+             {QStringLiteral("interval_s"), options.settings.update_interval_s},
+             {QStringLiteral("offset_position_mm"), options.settings.offset_position_mm},
+             {QStringLiteral("updates"), updates},
+             {QStringLiteral("controller"), controller ? controller->url().toString() : QString()},
+             {QStringLiteral("readings"), int(result.readings)},
+             {QStringLiteral("rms_before_um"), result.rms_before_um},
+             {QStringLiteral("rms_after_um"), result.rms_after_um},
+             {QStringLiteral("reduction"), gain}});
     } else {
         printLine(
             QStringLiteral("%1 updates; on %2's %3 readings the thermal error goes from %4 to "
