@@ -1,5 +1,7 @@
 #include "app/cli/CliCommon.h"
 
+#include <QSaveFile>
+
 #include "app/cli/CommandTable.h"
 
 #include <unistd.h>
@@ -226,6 +228,12 @@ QStringList runList(const QString& text) {
     QStringList ids;
     for (const QString& id : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) ids << id.trimmed();
     return ids;
+}
+
+void writeFileAtomically(const QString& path, const QByteArray& text) {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size() || !file.commit())
+        throw CliError(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
 }
 
 void printJson(const QJsonObject& object) {

@@ -86,6 +86,9 @@ QJsonValue jsonNumber(double value);
 QStringList runList(const QString& text);
 
 void printJson(const QJsonObject& object);
+/// Writes `text` to `path` whole or not at all (QSaveFile): a controller's
+/// file is either the old one or the new one, never half a table.
+void writeFileAtomically(const QString& path, const QByteArray& text);
 void printLine(const QString& text);
 
 }  // namespace driftlab::cli

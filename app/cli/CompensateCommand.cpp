@@ -3,11 +3,11 @@
 // a controller (DESIGN.md sections 8 and 9; docs/compensation.md).
 #include <QFileInfo>
 #include <QJsonArray>
-#include <QSaveFile>
 
 #include "app/cli/CliCommon.h"
 #include "app/cli/CommandTable.h"
 #include "app/cli/CompensationPush.h"
+#include "app/cli/ThermalProfile.h"
 #include "core/compensation/CsvExport.h"
 #include "core/compensation/FanucExport.h"
 #include "core/compensation/HeidenhainExport.h"
@@ -19,10 +19,10 @@ namespace {
 
 using namespace driftlab::compensation;
 
-const QStringList kFormats{QStringLiteral("linuxcnc"),  QStringLiteral("linuxcnc-type1"),
-                           QStringLiteral("fanuc"),     QStringLiteral("fanuc-g10"),
-                           QStringLiteral("sinumerik"), QStringLiteral("heidenhain"),
-                           QStringLiteral("csv")};
+const QStringList kFormats{
+    QStringLiteral("linuxcnc"),  QStringLiteral("linuxcnc-type1"), QStringLiteral("fanuc"),
+    QStringLiteral("fanuc-g10"), QStringLiteral("sinumerik"),      QStringLiteral("heidenhain"),
+    QStringLiteral("csv"),       QStringLiteral("sinumerik-temp"), QStringLiteral("isg-temp")};
 
 /// The file text for `format`; `axis` is the --axis value or empty.
 ExportResult exportTable(const CompensationTable& table, const QString& format, const QString& axis,
@@ -59,14 +59,6 @@ ExportResult exportTable(const CompensationTable& table, const QString& format, 
     }
     return format == QLatin1String("fanuc") ? exportFanucParameters(table, settings)
                                             : exportFanucG10(table, settings);
-}
-
-void writeAtomically(const QString& path, const QByteArray& text) {
-    // QSaveFile: the controller's file is either the old one or the whole
-    // new one, never a half-written table.
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size() || !file.commit())
-        throw CliError(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
 }
 
 QString um(double value) {
@@ -126,9 +118,10 @@ int compensateCommand(const QStringList& args) {
         QStringLiteral("Fanuc pitch error compensation magnification, parameter 3623 (default 1)."),
         QStringLiteral("N"), QStringLiteral("1")};
     parseArguments(parser, args,
-                   campaignSourceOptions() << format << out << runOption << spacing << points
-                                           << start << end << bidirectional << maxValue << maxStep
-                                           << axis << magnification << pushOptions(),
+                   campaignSourceOptions()
+                       << format << out << runOption << spacing << points << start << end
+                       << bidirectional << maxValue << maxStep << axis << magnification
+                       << thermalProfileOptions() << pushOptions(),
                    campaignSourceArguments());
 
     // A file, a push, or both; the push options are checked before any work.
@@ -174,10 +167,28 @@ int compensateCommand(const QStringList& args) {
     const Campaign campaign =
         loadCampaignSource(parser, plan ? db::StoreAccess::ReadWrite : db::StoreAccess::ReadOnly);
     const Run& run = choosePositioningRun(campaign, parser.value(runOption));
-    const QString source = QStringLiteral("run %1 of %2").arg(run.id, campaign.name);
+    QString source = QStringLiteral("run %1 of %2").arg(run.id, campaign.name);
     const iso::Evaluation evaluation = iso::evaluate(iso::readingsOf(run));
     if (!evaluation.ok()) throw CliError(source + QStringLiteral(": ") + evaluation.error);
-    const TableResult built = buildTable(evaluation, settings, limits);
+    const bool lineFormat = writeFile && isTemperatureLineFormat(formatName);
+    if (lineFormat && plan)
+        throw CliError(
+            QStringLiteral("--push carries a table, not the line of --format %1").arg(formatName),
+            2);
+    if (lineFormat && !wantsThermalProfile(parser))
+        throw CliError(QStringLiteral("--format %1 is a line through a model's thermal error: "
+                                      "give --model and --at RUN@SECONDS")
+                           .arg(formatName),
+                       2);
+    std::optional<ThermalProfile> thermal;
+    if (wantsThermalProfile(parser)) {
+        thermal = thermalProfile(parser, campaign, evaluation.targets.front().target_mm,
+                                 evaluation.targets.back().target_mm);
+        source += QStringLiteral(" + thermal error of ") + thermal->description;
+    }
+    if (lineFormat) return writeTemperatureLine(parser, *thermal, formatName, source);
+    const TableResult built =
+        buildTable(evaluation, settings, limits, thermal ? thermal->error_um : ErrorProfile{});
     if (!built.ok()) throw CliError(source + QStringLiteral(": ") + built.error);
     const CompensationTable& table = built.table;
     QStringList warnings = evaluation.warnings + built.warnings;
@@ -185,7 +196,7 @@ int compensateCommand(const QStringList& args) {
         const ExportResult exported =
             exportTable(table, formatName, parser.value(axis), campaign, magnificationValue);
         if (!exported.ok()) throw CliError(formatName + QStringLiteral(": ") + exported.error);
-        writeAtomically(parser.value(out), exported.text);
+        writeFileAtomically(parser.value(out), exported.text);
         warnings += exported.warnings;
     }
     printWarnings(warnings);
@@ -214,6 +225,7 @@ int compensateCommand(const QStringList& args) {
              {QStringLiteral("max_correction_um"), table.maxAbsCorrectionUm()},
              {QStringLiteral("B_mean_um"), jsonNumber(table.mean_reversal_um)},
              {QStringLiteral("cycles"), evaluation.cycles},
+             {QStringLiteral("thermal"), thermal ? QJsonValue(thermal->description) : QJsonValue()},
              {QStringLiteral("sign"),
               QStringLiteral("correction = -(actual - target), added to the command")}});
         failIfNotApplied();

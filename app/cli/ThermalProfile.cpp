@@ -1,9 +1,11 @@
 #include "app/cli/ThermalProfile.h"
 
+#include <QJsonObject>
 #include <algorithm>
 #include <cmath>
 
 #include "app/cli/CliCommon.h"
+#include "core/compensation/TemperatureCompensationLine.h"
 #include "core/models/ModelFactory.h"
 
 namespace driftlab::cli {
@@ -17,6 +19,11 @@ const QCommandLineOption kTrain{QStringLiteral("train"),
                                 QStringLiteral("Runs the model is fitted on (default: the run of "
                                                "--at is not among them; the first other run)."),
                                 QStringLiteral("R,..")};
+const QCommandLineOption kReference{
+    QStringLiteral("reference"),
+    QStringLiteral("sinumerik-temp, isg-temp: the line's reference position (default: the "
+                   "screw's fixed end)."),
+    QStringLiteral("MM")};
 const QCommandLineOption kAt{
     QStringLiteral("at"),
     QStringLiteral("The thermal state: a run and a time in it, RUN@SECONDS (e.g. S3@3600)."),
@@ -30,7 +37,7 @@ constexpr int kProfilePoints = 257;
 }  // namespace
 
 QList<QCommandLineOption> thermalProfileOptions() {
-    return {kModel, kTrain, kAt};
+    return {kModel, kTrain, kAt, kReference};
 }
 
 bool wantsThermalProfile(const QCommandLineParser& parser) {
@@ -108,6 +115,61 @@ ThermalProfile thermalProfile(const QCommandLineParser& parser, const Campaign& 
                               .arg(model->name(), train.join(QLatin1Char(',')), stateRun)
                               .arg(time_s);
     return profile;
+}
+
+bool isTemperatureLineFormat(const QString& format) {
+    return format == QLatin1String("sinumerik-temp") || format == QLatin1String("isg-temp");
+}
+
+int writeTemperatureLine(const QCommandLineParser& parser, const ThermalProfile& profile,
+                         const QString& format, const QString& source) {
+    std::vector<double> x_mm, e_um;
+    for (int i = 0; i < kProfilePoints; ++i) {
+        x_mm.push_back(profile.from_mm +
+                       (profile.to_mm - profile.from_mm) * i / (kProfilePoints - 1));
+        e_um.push_back(profile.error_um(x_mm.back()));
+    }
+    const double reference_mm =
+        parser.isSet(kReference) ? numberOption(parser, kReference) : profile.fixed_end_mm;
+    const compensation::ErrorLine line = compensation::fitErrorLine(x_mm, e_um, reference_mm);
+    const QString axis = parser.value(QStringLiteral("axis"));
+    const compensation::ExportResult exported =
+        format == QLatin1String("isg-temp")
+            ? compensation::exportIsgTemperatureLine(line)
+            : compensation::exportSinumerikTemperatureLine(
+                  line, axis.isEmpty() ? QStringLiteral("AX1") : axis);
+    if (!exported.ok()) throw CliError(format + QStringLiteral(": ") + exported.error);
+    const QString out = parser.value(QStringLiteral("out"));
+    writeFileAtomically(out, exported.text);
+    printWarnings(exported.warnings);
+    const QJsonObject lineJson{{QStringLiteral("reference_mm"), line.reference_mm},
+                               {QStringLiteral("offset_um"), line.offset_um},
+                               {QStringLiteral("slope_um_per_m"), line.slope_um_per_m},
+                               {QStringLiteral("residual_rms_um"), line.residual_rms_um},
+                               {QStringLiteral("residual_peak_um"), line.residual_peak_um}};
+    if (parser.isSet(QStringLiteral("json"))) {
+        printJson({{QStringLiteral("source"), source},
+                   {QStringLiteral("format"), format},
+                   {QStringLiteral("out"), out},
+                   {QStringLiteral("thermal"), profile.description},
+                   {QStringLiteral("line"), lineJson},
+                   {QStringLiteral("sign"),
+                    QStringLiteral("offset and slope of the error (actual - target)")}});
+        return 0;
+    }
+    printLine(QStringLiteral("%1 straight-line temperature compensation from %2 → %3")
+                  .arg(format, source, out));
+    printLine(QStringLiteral("error %1 µm at %2 mm, slope %3 µm/m (error = actual − target); the "
+                             "line leaves %4 µm RMS, %5 µm peak of the thermal error from %6 to "
+                             "%7 mm")
+                  .arg(line.offset_um, 0, 'f', 3)
+                  .arg(line.reference_mm, 0, 'f', 3)
+                  .arg(line.slope_um_per_m, 0, 'f', 3)
+                  .arg(line.residual_rms_um, 0, 'f', 3)
+                  .arg(line.residual_peak_um, 0, 'f', 3)
+                  .arg(profile.from_mm, 0, 'f', 1)
+                  .arg(profile.to_mm, 0, 'f', 1));
+    return 0;
 }
 
 }  // namespace driftlab::cli

@@ -29,4 +29,13 @@ bool wantsThermalProfile(const QCommandLineParser& parser);
 ThermalProfile thermalProfile(const QCommandLineParser& parser, const Campaign& campaign,
                               double from_mm, double to_mm);
 
+/// The formats that take a line, not a table: `sinumerik-temp`, `isg-temp`.
+bool isTemperatureLineFormat(const QString& format);
+
+/// Writes the least-squares line of the profile over its range as `format`
+/// to --out (reference: --reference, default the screw's fixed end) and
+/// prints its summary; returns the exit code.
+int writeTemperatureLine(const QCommandLineParser& parser, const ThermalProfile& profile,
+                         const QString& format, const QString& source);
+
 }  // namespace driftlab::cli
