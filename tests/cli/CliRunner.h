@@ -4,6 +4,8 @@
 
 #include <QProcess>
 #include <QStringList>
+#include <QTemporaryDir>
+#include <map>
 
 namespace driftlab::test {
 
@@ -28,6 +30,22 @@ inline CliResult runCli(const QStringList& args, const QStringList& wrapper = {}
 /// The last line on stderr, where the one-line reason of a failure stands.
 inline QByteArray reason(const QByteArray& err) {
     return err.trimmed().split('\n').last();
+}
+
+/// A campaign of the simulated rig with `runs` (e.g. "S1,S3") and `seed`,
+/// simulated once per test binary and kept until it ends.
+inline const QString& simulatedCampaign(const QString& runs, int seed) {
+    static QTemporaryDir dir;
+    static std::map<QString, QString> made;
+    const QString key = runs + QLatin1Char('-') + QString::number(seed);
+    auto found = made.find(key);
+    if (found != made.end()) return found->second;
+    const QString path = dir.filePath(QStringLiteral("campaign-") + key);
+    const CliResult r =
+        runCli({QStringLiteral("simulate"), QStringLiteral("--out"), path, QStringLiteral("--runs"),
+                runs, QStringLiteral("--seed"), QString::number(seed)});
+    EXPECT_EQ(r.exitCode, 0) << r.err.constData();
+    return made.emplace(key, path).first->second;
 }
 
 }  // namespace driftlab::test

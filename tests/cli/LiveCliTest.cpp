@@ -16,17 +16,7 @@ using namespace driftlab::test;
 namespace {
 
 const QString& twoStateBundle() {
-    static QTemporaryDir dir;
-    static const QString path = dir.filePath(QStringLiteral("campaign"));
-    static const bool made = [] {
-        const CliResult r = runCli({QStringLiteral("simulate"), QStringLiteral("--out"), path,
-                                    QStringLiteral("--runs"), QStringLiteral("S1,S3"),
-                                    QStringLiteral("--seed"), QStringLiteral("11")});
-        EXPECT_EQ(r.exitCode, 0) << r.err.constData();
-        return true;
-    }();
-    (void)made;
-    return path;
+    return simulatedCampaign(QStringLiteral("S1,S3"), 5);
 }
 
 QJsonObject live(const QStringList& more) {

@@ -20,15 +20,7 @@ using namespace driftlab::test;
 namespace {
 
 const QString& campaignS1S3() {
-    static QTemporaryDir dir;
-    static const QString path = dir.filePath(QStringLiteral("campaign"));
-    static const bool made = [] {
-        const CliResult r = runCli({"simulate", "--out", path, "--runs", "S1,S3", "--seed", "5"});
-        EXPECT_EQ(r.exitCode, 0) << r.err.constData();
-        return true;
-    }();
-    (void)made;
-    return path;
+    return simulatedCampaign(QStringLiteral("S1,S3"), 5);
 }
 
 /// position → correction µm of a CSV table.

@@ -9,13 +9,12 @@ ended, the motor command minus the commanded position must equal the offset
 within 1 um at every step: +12.345 um, a change, a write while cutting
 (deferred), disable (back to 0), and a timeout (stale raised, offset held).
 
-Usage: eoffset_acceptance.py [--writer-command 'PROGRAM ARG {offset_nm} ...']
-Without --writer-command the writer is mbpoll. Exit 0 pass, 1 fail, 77 skip.
+Usage: eoffset_acceptance.py (the writer is mbpoll; DriftLab's own writer is
+tested by live_acceptance.py). Exit 0 pass, 1 fail, 77 skip.
 """
 
 import argparse
 import os
-import shlex
 import socket
 import sys
 
@@ -34,18 +33,13 @@ def free_port():
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--writer-command",
-                        help="argv template with {host} {port} {offset_nm} {enable} "
-                             "{timeout_s}; default: mbpoll")
-    args = parser.parse_args()
+    argparse.ArgumentParser(description=__doc__).parse_args()
     lcnc_sim.skip_unless_available()
     if not os.path.exists("/usr/bin/mbpoll"):
         print("FAIL: /usr/bin/mbpoll (Debian mbpoll) is missing: it is in "
               "packaging/debian-packages.txt")
         return 1
-    writer = ({"kind": "command", "argv": shlex.split(args.writer_command)}
-              if args.writer_command else {"kind": "mbpoll"})
+    writer = {"kind": "mbpoll"}
     resources = os.path.realpath(RESOURCES)
     port = free_port()
     code, output, result, seconds = lcnc_sim.run(

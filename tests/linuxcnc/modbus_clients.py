@@ -1,10 +1,8 @@
 """Modbus TCP clients of the live-offset test, independent of the component.
 
-The writer is pluggable (docs/linuxcnc.md): `mbpoll` (Debian's mbpoll) now;
-`command`, any program given as an argv template, is how DriftLab's own
-live-compensation writer (a driftlab-cli command, not built yet) takes its
-place in a second variant of the test. The reader is always mbpoll, so the
-check never trusts the writer under test.
+The writer of eoffset_acceptance.py is Debian's mbpoll; DriftLab's own
+writer (`driftlab-cli live --push`) is tested by live_acceptance.py. The
+reader is always mbpoll, so a check never trusts the writer under test.
 """
 
 import re
@@ -48,26 +46,7 @@ class MbpollWriter:
         mbpoll(self.host, self.port, REG_SEQUENCE, "-t", "4", str(self.sequence))
 
 
-class CommandWriter:
-    """Runs argv with {host} {port} {offset_nm} {enable} {timeout_s} filled
-    in; the program keeps its own sequence."""
-
-    def __init__(self, host, port, argv):
-        self.host, self.port, self.argv = host, port, argv
-
-    def write(self, offset_nm, enable, timeout_s):
-        fields = dict(host=self.host, port=self.port, offset_nm=offset_nm,
-                      enable=int(enable), timeout_s=timeout_s)
-        argv = [a.format(**fields) for a in self.argv]
-        done = subprocess.run(argv, capture_output=True, text=True, timeout=60)
-        if done.returncode != 0:
-            raise RuntimeError("%s exited %d: %s" % (" ".join(argv), done.returncode,
-                                                     done.stderr))
-
-
 def make_writer(spec, host, port):
     if spec["kind"] == "mbpoll":
         return MbpollWriter(host, port)
-    if spec["kind"] == "command":
-        return CommandWriter(host, port, spec["argv"])
     raise ValueError("unknown writer " + spec["kind"])
