@@ -137,7 +137,7 @@ int benchCommand(const QStringList& args) {
         QStringLiteral("Pushes of a 256-point table to the simulated controller (0: skip)."),
         QStringLiteral("N"), QStringLiteral("50")};
     const QCommandLineOption only{QStringLiteral("only"),
-                                  QStringLiteral("Measure only this figure: push."),
+                                  QStringLiteral("Measure only this figure: push, online."),
                                   QStringLiteral("FIGURE")};
     parseArguments(parser, args, {repeat, noPython, importMb, pushes, only});
     const int pushCount = parser.value(pushes).toInt();
@@ -150,8 +150,25 @@ int benchCommand(const QStringList& args) {
             printPushLine(figures);
         return 0;
     }
+    if (parser.value(only) == QLatin1String("online")) {
+        // The median of --repeat measurements of live compensation's step.
+        std::vector<double> us;
+        for (int i = 0; i < std::max(1, parser.value(repeat).toInt()); ++i)
+            us.push_back(onlineStepMicroseconds());
+        std::sort(us.begin(), us.end());
+        const double median = us[us.size() / 2];
+        if (parser.isSet(QStringLiteral("json")))
+            printJson({{QStringLiteral("online_step_us"), median}});
+        else
+            printLine(QStringLiteral("online model    %1 µs per observer step + 128-point table "
+                                     "update (median of %2; target < 50 µs)")
+                          .arg(median, 0, 'f', 2)
+                          .arg(us.size()));
+        return 0;
+    }
     if (parser.isSet(only))
-        throw CliError(QStringLiteral("--only: '%1' is not a figure it can measure alone (push)")
+        throw CliError(QStringLiteral("--only: '%1' is not a figure it can measure alone (push, "
+                                      "online)")
                            .arg(parser.value(only)),
                        2);
     const int repetitions = std::max(1, parser.value(repeat).toInt());

@@ -16,8 +16,9 @@ using namespace driftlab::test;
 namespace {
 
 const QStringList kNotBuilt{"run", "report", "batch"};
-const QStringList kBuilt{"import",   "export",   "info",  "simulate",   "fit",    "compare",
-                         "diagnose", "iso230-2", "bench", "compensate", "pushes", "controller-sim"};
+const QStringList kBuilt{"import",  "export",         "info",     "simulate", "fit",
+                         "compare", "diagnose",       "iso230-2", "bench",    "compensate",
+                         "pushes",  "controller-sim", "live",     "iso230-3"};
 
 QJsonObject json(const CliResult& r) {
     return QJsonDocument::fromJson(r.out).object();
