@@ -137,14 +137,20 @@ int liveCommand(const QStringList& args) {
         throw CliError(QStringLiteral("--cutting goes without --push: the controller says when it "
                                       "cuts"),
                        2);
+    bool ok = false;
+    const int staleAfter_s = parser.value(staleAfter).toInt(&ok);
+    if (!ok || staleAfter_s < 1 || staleAfter_s > 65535)
+        throw CliError(QStringLiteral("--live-timeout-s: '%1' is not a whole number of seconds "
+                                      "from 1 to 65535")
+                           .arg(parser.value(staleAfter)),
+                       2);
     const double speedupFactor = parser.isSet(speedup) ? positiveNumberOption(parser, speedup) : 0;
     std::unique_ptr<live::LiveOffsetWriter> controller;
     if (parser.isSet(push)) {
         QString error;
         const auto url = modbus::parseModbusUrl(parser.value(push), &error);
         if (!url) throw CliError(QStringLiteral("--push: ") + error, 2);
-        controller =
-            std::make_unique<live::LiveOffsetWriter>(*url, 2.0, parser.value(staleAfter).toInt());
+        controller = std::make_unique<live::LiveOffsetWriter>(*url, 2.0, staleAfter_s);
         if (!controller->open(&error)) throw CliError(QStringLiteral("--push: ") + error);
     }
     QString controllerError;
@@ -210,17 +216,21 @@ int liveCommand(const QStringList& args) {
              {QStringLiteral("readings"), int(result.readings)},
              {QStringLiteral("rms_before_um"), result.rms_before_um},
              {QStringLiteral("rms_after_um"), result.rms_after_um},
+             {QStringLiteral("rms_after_offset_um"), result.rms_after_offset_um},
              {QStringLiteral("reduction"), gain}});
     } else {
         printLine(
             QStringLiteral("%1 updates; on %2's %3 readings the thermal error goes from %4 to "
-                           "%5 µm RMS with the live correction (%6 %)")
+                           "%5 µm RMS with the live table (%6 %), to %7 µm RMS with the "
+                           "single offset at %8 mm applied everywhere")
                 .arg(result.updates.size())
                 .arg(runId)
                 .arg(result.readings)
                 .arg(result.rms_before_um, 0, 'f', 2)
                 .arg(result.rms_after_um, 0, 'f', 2)
-                .arg(100 * gain, 0, 'f', 0));
+                .arg(100 * gain, 0, 'f', 0)
+                .arg(result.rms_after_offset_um, 0, 'f', 2)
+                .arg(options.settings.offset_position_mm, 0, 'f', 1));
     }
     return 0;
 }

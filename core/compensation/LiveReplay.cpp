@@ -43,7 +43,7 @@ LiveReplayResult replayLive(const models::RunData& run,
         std::sort(readings.begin(), readings.end(),
                   [](const auto& a, const auto& b) { return a.time_s < b.time_s; });
         std::size_t next = 0;
-        double before = 0, after = 0;
+        double before = 0, after = 0, afterOffset = 0;
         // A reading taken during a step sees the correction applied before it.
         auto score = [&](double until_s) {
             for (; next < readings.size() && readings[next].time_s <= until_s; ++next) {
@@ -51,8 +51,10 @@ LiveReplayResult replayLive(const models::RunData& run,
                 const double left =
                     r.error_um + correctionAt(live.applied(), options.settings.table_positions_mm,
                                               r.position_mm);
+                const double leftOffset = r.error_um + live.applied().offset_um;
                 before += r.error_um * r.error_um;
                 after += left * left;
+                afterOffset += leftOffset * leftOffset;
             }
         };
         physics::StepConditions step;
@@ -80,6 +82,7 @@ LiveReplayResult replayLive(const models::RunData& run,
         if (next > 0) {
             result.rms_before_um = std::sqrt(before / double(next));
             result.rms_after_um = std::sqrt(after / double(next));
+            result.rms_after_offset_um = std::sqrt(afterOffset / double(next));
         }
     } catch (const models::ModelError& e) {
         result.error = e.message;

@@ -31,6 +31,9 @@ struct LiveReplayResult {
     /// linearly at the reading's target), µm.
     double rms_before_um = 0;
     double rms_after_um = 0;
+    /// The same with only the working-position offset applied everywhere:
+    /// what a controller with a single external offset gets.
+    double rms_after_offset_um = 0;
     std::size_t readings = 0;
     bool cancelled = false;
     QString error;  ///< empty on success
