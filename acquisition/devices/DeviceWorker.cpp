@@ -38,6 +38,7 @@ DeviceWorker::DeviceWorker(ChannelRegisterMap map, modbus::ModbusUrl url,
     // A child, so it moves to the worker's thread with the worker.
     m_timer = new QTimer(this);
     m_timer->setSingleShot(true);
+    connect(m_timer, &QTimer::timeout, this, [this] { m_link_up ? pollNow() : connectNow(); });
 }
 
 DeviceWorker::~DeviceWorker() = default;
@@ -54,7 +55,11 @@ void DeviceWorker::shutdown() {
     m_stop = true;
     m_timer->stop();
     if (m_module) m_module->close();
+    m_link_up = false;
     setHealth(DeviceHealth::Stopped);
+    // Quitting here, not from the facade, so this runs before the loop ends:
+    // quit() from outside may drop events still queued.
+    thread()->quit();
 }
 
 void DeviceWorker::setHealth(DeviceHealth health) {
@@ -67,6 +72,7 @@ void DeviceWorker::connectNow() {
     if (m_stop) return;
     QString error;
     if (!m_module->connect(&error)) return failed(error);
+    m_link_up = true;
     pollNow();
 }
 
@@ -85,13 +91,12 @@ void DeviceWorker::pollNow() {
     m_last_reading_utc = reading->time_utc;
     setHealth(DeviceHealth::Connected);
     emit readingReady(*reading);
-    m_timer->disconnect();
-    connect(m_timer, &QTimer::timeout, this, &DeviceWorker::pollNow);
     m_timer->start(toMs(m_options.poll_interval_s));
 }
 
 void DeviceWorker::failed(const QString& message) {
     m_module->close();
+    m_link_up = false;
     m_outage = true;
     ++m_attempts;
     if (!m_error_reported) {
@@ -99,16 +104,15 @@ void DeviceWorker::failed(const QString& message) {
         qCWarning(lcDevice) << message;
         emit errorOccurred(message);
     }
-    const double retry_s = m_backoff_s;
-    emit attemptFailed(m_attempts, retry_s);
     if (m_options.max_attempts > 0 && m_attempts >= m_options.max_attempts) {
+        emit attemptFailed(m_attempts, 0.0);
         setHealth(DeviceHealth::Failed);
         return;
     }
+    const double retry_s = m_backoff_s;
+    emit attemptFailed(m_attempts, retry_s);
     setHealth(m_last_reading_utc.isValid() ? DeviceHealth::Reconnecting : DeviceHealth::Connecting);
     m_backoff_s = std::min(m_backoff_s * 2, m_options.backoff_max_s);
-    m_timer->disconnect();
-    connect(m_timer, &QTimer::timeout, this, &DeviceWorker::connectNow);
     m_timer->start(toMs(retry_s));
 }
 
@@ -155,8 +159,8 @@ bool TemperatureDevice::stopAndWait(int timeout_ms) {
     if (!m_thread) return true;
     if (!m_thread->isRunning()) return true;
     m_worker->requestStop();
+    // The worker quits its thread once it has closed the link.
     QMetaObject::invokeMethod(m_worker, &DeviceWorker::shutdown, Qt::QueuedConnection);
-    m_thread->quit();
     if (m_thread->wait(QDeadlineTimer(timeout_ms))) return true;
     qCWarning(lcDevice) << "device thread still in a request after" << timeout_ms
                         << "ms; it will end on its own";

@@ -59,8 +59,9 @@ signals:
     /// No data between `from_utc` (last reading before) and `to_utc` (first after).
     void gap(const QDateTime& from_utc, const QDateTime& to_utc);
     void healthChanged(driftlab::devices::DeviceHealth health);
-    /// Every failed connect or poll, with its number in the cycle (errors are
-    /// reported once per cycle; this lets a watcher see the retries).
+    /// Every failed connect or poll, with its number in the cycle and the wait
+    /// before the next attempt (0 when giving up). Errors are reported once
+    /// per cycle; this lets a watcher see the retries.
     void attemptFailed(int attempt, double next_retry_s);
 
 private:
@@ -81,6 +82,7 @@ private:
     bool m_error_reported = false;  ///< this cycle's one error is out
     QDateTime m_last_reading_utc;   ///< invalid before the first reading
     bool m_outage = false;          ///< data lost since m_last_reading_utc
+    bool m_link_up = false;         ///< the timer polls when true, else reconnects
 };
 
 /// The facade: owns the worker's thread; its signals arrive on the thread
@@ -96,7 +98,8 @@ public:
     static constexpr int kDefaultStopTimeoutMs = 5000;
 
     void start();
-    /// Stop flag, quit, wait at most `timeout_ms`. False when the worker is
+    /// Stop flag, a queued shutdown (closes the link, quits the thread), a
+    /// wait of at most `timeout_ms`. False when the worker is
     /// still inside a request then; the thread is left to end on its own (it
     /// is bounded by the response timeout) and deletes itself — never
     /// terminate(), which could leave libmodbus or a lock half-done.

@@ -133,7 +133,8 @@ TEST(DeviceWorker, peerKilledMidRun_oneErrorReconnectOnNewPeerAndGapCoversOutage
 TEST(DeviceWorker, nothingListening_oneErrorThenFailedAfterMaxAttempts) {
     test::ensureCoreApplication();
     DeviceWorkerOptions options = quickOptions();
-    options.max_attempts = 4;
+    options.max_attempts = 5;
+    options.backoff_max_s = 0.2;
     TemperatureDevice device(profile(), {QStringLiteral("127.0.0.1"), closedPort(), 1}, options);
     QSignalSpy errors(&device, &TemperatureDevice::errorOccurred);
     QSignalSpy attempts(&device, &TemperatureDevice::attemptFailed);
@@ -145,10 +146,10 @@ TEST(DeviceWorker, nothingListening_oneErrorThenFailedAfterMaxAttempts) {
         ASSERT_TRUE(health.wait(kEventWaitMs));
     EXPECT_EQ(errors.count(), 1);
     EXPECT_TRUE(errors.at(0).at(0).toString().contains(QStringLiteral("cannot connect")));
-    ASSERT_EQ(attempts.count(), 4);
-    // The backoff doubles up to its cap: 0.05, 0.1, 0.2, 0.4 s.
-    const double expected_s[] = {0.05, 0.1, 0.2, 0.4};
-    for (int i = 0; i < 4; ++i) {
+    ASSERT_EQ(attempts.count(), 5);
+    // The backoff doubles up to its cap (0.2 s); no retry after the last attempt.
+    const double expected_s[] = {0.05, 0.1, 0.2, 0.2, 0.0};
+    for (int i = 0; i < 5; ++i) {
         EXPECT_EQ(attempts.at(i).at(0).toInt(), i + 1);
         EXPECT_DOUBLE_EQ(attempts.at(i).at(1).toDouble(), expected_s[i]);
     }
@@ -167,4 +168,8 @@ TEST(DeviceWorker, destroyedWhileRetrying_stopsWithinTheBound) {
     // The stop does not wait out the 5 s backoff: quit ends the timer's loop.
     EXPECT_TRUE(device.stopAndWait(4000));
     EXPECT_FALSE(device.isRunning());
+    // The worker's last word, delivered through the queue.
+    QSignalSpy health(&device, &TemperatureDevice::healthChanged);
+    ASSERT_TRUE(health.wait(kEventWaitMs));
+    EXPECT_EQ(health.last().at(0).value<DeviceHealth>(), DeviceHealth::Stopped);
 }
