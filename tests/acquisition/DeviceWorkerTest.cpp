@@ -90,7 +90,7 @@ TEST(DeviceWorker, peerKilledMidRun_oneErrorReconnectOnNewPeerAndGapCoversOutage
     ASSERT_TRUE(waitFor(errors, 1));
     // Several failed attempts in the one cycle, still one error.
     ASSERT_TRUE(waitFor(attempts, 4));
-    EXPECT_EQ(errors.count(), 1) << qPrintable(errors.at(1).at(0).toString());
+    EXPECT_EQ(errors.count(), 1) << qPrintable(errors.last().at(0).toString());
     const int readings_before = int(readings.count());
 
     const QDateTime restarted_utc = QDateTime::currentDateTimeUtc();
