@@ -145,7 +145,8 @@ TemperatureDevice::~TemperatureDevice() {
 }
 
 void TemperatureDevice::start() {
-    if (!m_thread || m_thread->isRunning()) return;
+    // One run per device: after a stop the worker is deleted with its thread.
+    if (!m_thread || m_started) return;
     m_started = true;
     m_thread->start();
     QMetaObject::invokeMethod(m_worker, &DeviceWorker::start, Qt::QueuedConnection);

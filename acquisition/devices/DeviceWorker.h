@@ -97,6 +97,7 @@ public:
 
     static constexpr int kDefaultStopTimeoutMs = 5000;
 
+    /// Starts polling; once per device (a stopped device is not restarted).
     void start();
     /// Stop flag, a queued shutdown (closes the link, quits the thread), a
     /// wait of at most `timeout_ms`. False when the worker is

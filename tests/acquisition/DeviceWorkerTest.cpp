@@ -172,4 +172,6 @@ TEST(DeviceWorker, destroyedWhileRetrying_stopsWithinTheBound) {
     QSignalSpy health(&device, &TemperatureDevice::healthChanged);
     ASSERT_TRUE(health.wait(kEventWaitMs));
     EXPECT_EQ(health.last().at(0).value<DeviceHealth>(), DeviceHealth::Stopped);
+    device.start();  // a stopped device stays stopped (its worker is gone)
+    EXPECT_FALSE(device.isRunning());
 }
