@@ -72,6 +72,16 @@ QString ModbusTcpLink::failure(int code, const QString& what, int address, int c
 
 bool ModbusTcpLink::readRegisters(int address, int count, std::vector<std::uint16_t>& out,
                                   QString* error) {
+    return read(false, address, count, out, error);
+}
+
+bool ModbusTcpLink::readInputRegisters(int address, int count, std::vector<std::uint16_t>& out,
+                                       QString* error) {
+    return read(true, address, count, out, error);
+}
+
+bool ModbusTcpLink::read(bool input, int address, int count, std::vector<std::uint16_t>& out,
+                         QString* error) {
     out.assign(std::size_t(std::max(count, 0)), 0);
     if (!m_connected) {
         *error = QStringLiteral("%1: not connected").arg(m_url.endpoint());
@@ -80,9 +90,14 @@ bool ModbusTcpLink::readRegisters(int address, int count, std::vector<std::uint1
     for (int done = 0; done < count;) {
         const int n = std::min(kMaxReadRegisters, count - done);
         ++m_requests;
-        if (modbus_read_registers(m_context, address + done, n, out.data() + done) != n) {
+        const int got =
+            input ? modbus_read_input_registers(m_context, address + done, n, out.data() + done)
+                  : modbus_read_registers(m_context, address + done, n, out.data() + done);
+        if (got != n) {
             const int code = errno;
-            *error = failure(code, QStringLiteral("reading"), address + done, n);
+            *error =
+                failure(code, input ? QStringLiteral("reading input") : QStringLiteral("reading"),
+                        address + done, n);
             return false;
         }
         done += n;

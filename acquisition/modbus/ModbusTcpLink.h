@@ -36,6 +36,10 @@ public:
     /// Holding registers [address, address + count) into `out`, in requests of
     /// ≤ 125. False with `error`; a transport error also closes the link.
     bool readRegisters(int address, int count, std::vector<std::uint16_t>& out, QString* error);
+    /// Input registers (function 4), as readRegisters: many I/O modules keep
+    /// their measurements there rather than in holding registers.
+    bool readInputRegisters(int address, int count, std::vector<std::uint16_t>& out,
+                            QString* error);
     /// Writes `values` from `address` on in requests of ≤ 123 (function 16).
     bool writeRegisters(int address, std::span<const std::uint16_t> values, QString* error);
 
@@ -49,6 +53,7 @@ private:
     /// The message for a failed request (errno `code`); closes the link
     /// unless the device answered with a Modbus exception.
     QString failure(int code, const QString& what, int address, int count);
+    bool read(bool input, int address, int count, std::vector<std::uint16_t>& out, QString* error);
 
     ModbusUrl m_url;
     double m_timeout_s;

@@ -1,0 +1,74 @@
+#!/usr/bin/python3
+"""An independent temperature module for DriftLab's device tests, written with
+Debian's python3-pymodbus (3.0) against docs/devices.md and
+resources/devices/temperature-8ch-pt100.json, not against DriftLab's C++.
+
+    /usr/bin/python3 pymodbus_temperature_module.py [--port N]
+
+Prints the TCP port it listens on (127.0.0.1) as its first line, then serves
+until killed. The values are fixed so that a test knows what it must read:
+
+input registers 0..7 (the 8-channel profile: int16 in 0.1 degC)
+    21.5, -12.3, 0.0, 100.0, open (0x7FFF), short (0x8000), 25.3, 3276.6
+holding registers 100.. (word orders and 32-bit types)
+    100-101 float32 21.5 high word first    102-103 float32 21.5 low word first
+    104-105 int32 -123456 high word first   106-107 uint32 3000000000 low first
+    108     uint16 65000
+"""
+import argparse
+import asyncio
+import struct
+
+from pymodbus.datastore import (ModbusSequentialDataBlock, ModbusServerContext,
+                                ModbusSlaveContext)
+from pymodbus.server.async_io import ModbusTcpServer
+
+PROFILE_DEGC = [21.5, -12.3, 0.0, 100.0, None, None, 25.3, 3276.6]
+OPEN, SHORT = 0x7FFF, 0x8000
+
+
+def int16_word(value):
+    return struct.unpack(">H", struct.pack(">h", value))[0]
+
+
+def words(fmt, value):
+    """The two registers of a 32-bit value, high word first."""
+    return list(struct.unpack(">HH", struct.pack(fmt, value)))
+
+
+def input_registers():
+    regs = [int16_word(round(v * 10)) if v is not None else 0 for v in PROFILE_DEGC]
+    regs[4], regs[5] = OPEN, SHORT
+    return regs
+
+
+def holding_registers():
+    regs = [0] * 110
+    regs[100:102] = words(">f", 21.5)
+    regs[102:104] = list(reversed(words(">f", 21.5)))
+    regs[104:106] = words(">i", -123456)
+    regs[106:108] = list(reversed(words(">I", 3000000000)))
+    regs[108] = 65000
+    return regs
+
+
+async def serve(port):
+    slave = ModbusSlaveContext(ir=ModbusSequentialDataBlock(0, input_registers()),
+                               hr=ModbusSequentialDataBlock(0, holding_registers()),
+                               zero_mode=True)
+    server = ModbusTcpServer(ModbusServerContext(slaves=slave, single=True),
+                             address=("127.0.0.1", port), allow_reuse_address=True)
+    task = asyncio.create_task(server.serve_forever())
+    await server.serving
+    print(server.server.sockets[0].getsockname()[1], flush=True)
+    await task
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--port", type=int, default=0, help="TCP port (0: a free one)")
+    asyncio.run(serve(parser.parse_args().port))
+
+
+if __name__ == "__main__":
+    main()
