@@ -35,7 +35,7 @@ TEST(AirRefractiveIndex, matchesPublishedNistFormExamples) {
 
 // The two equations come from different data and theory (Edlén's empirical
 // dispersion with Birch & Downs' refit; Ciddor's densities from the BIPM
-// equation of state): NIST states they agree to a few parts in 1e8 in the
+// equation of state); they are known to agree to a few parts in 1e8 in the
 // lab's range, so each checks the other's implementation there.
 TEST(AirRefractiveIndex, edlenAndCiddorAgreeOverTheLabRange) {
     double worst = 0;
@@ -49,9 +49,9 @@ TEST(AirRefractiveIndex, edlenAndCiddorAgreeOverTheLabRange) {
     EXPECT_LT(worst, 2e-8);
 }
 
-// Interferometer vendors' and textbooks' rules of thumb near 20 °C, 101.3 kPa,
-// 50 %RH at 633 nm: −0.93 ppm/K, +2.7 ppm/kPa, −0.0085 ppm/%RH (e.g. Estler,
-// "High-accuracy displacement interferometry in air", Appl. Opt. 24 (1985)).
+// The rules of thumb quoted for HeNe interferometers near 20 °C, 101.3 kPa,
+// 50 %RH: −0.93 ppm/K, +2.7 ppm/kPa, −0.0085 ppm/%RH (from general knowledge,
+// not checked against a primary source here), to the stated tolerance.
 TEST(AirRefractiveIndex, sensitivitiesNearStandardConditionsAreTheTextbookOnes) {
     const AirState base{20.0, 101'325.0, 50.0, 450.0};
     const double n0 = edlenRefractiveIndex(base);
