@@ -14,10 +14,10 @@ import argparse
 import asyncio
 import struct
 
-from pymodbus.datastore import (ModbusSequentialDataBlock, ModbusServerContext,
-                                ModbusSlaveContext)
-from pymodbus.server.async_io import ModbusTcpServer
+from pymodbus.datastore import ModbusSequentialDataBlock, ModbusSlaveContext
 from pymodbus.utilities import computeCRC
+
+from pymodbus_serve import serve_on_loopback
 
 MAGIC, MAP_VERSION = 0x4446, 1
 MACHINE_STATE, CAPACITY, ACTIVE_VERSION, COMMIT_STATUS, ACK_VERSION, PREVIOUS_VERSION = 2, 3, 4, 5, 6, 7
@@ -110,13 +110,7 @@ class ControllerMap(ModbusSequentialDataBlock):
 
 
 async def serve(port, capacity):
-    slave = ModbusSlaveContext(hr=ControllerMap(capacity), zero_mode=True)
-    server = ModbusTcpServer(ModbusServerContext(slaves=slave, single=True),
-                             address=("127.0.0.1", port), allow_reuse_address=True)
-    task = asyncio.create_task(server.serve_forever())
-    await server.serving
-    print(server.server.sockets[0].getsockname()[1], flush=True)
-    await task
+    await serve_on_loopback(ModbusSlaveContext(hr=ControllerMap(capacity), zero_mode=True), port)
 
 
 def main():

@@ -19,9 +19,9 @@ import argparse
 import asyncio
 import struct
 
-from pymodbus.datastore import (ModbusSequentialDataBlock, ModbusServerContext,
-                                ModbusSlaveContext)
-from pymodbus.server.async_io import ModbusTcpServer
+from pymodbus.datastore import ModbusSequentialDataBlock, ModbusSlaveContext
+
+from pymodbus_serve import serve_on_loopback
 
 PROFILE_DEGC = [21.5, -12.3, 0.0, 100.0, None, None, 25.3, 3276.6]
 OPEN, SHORT = 0x7FFF, 0x8000
@@ -56,12 +56,7 @@ async def serve(port):
     slave = ModbusSlaveContext(ir=ModbusSequentialDataBlock(0, input_registers()),
                                hr=ModbusSequentialDataBlock(0, holding_registers()),
                                zero_mode=True)
-    server = ModbusTcpServer(ModbusServerContext(slaves=slave, single=True),
-                             address=("127.0.0.1", port), allow_reuse_address=True)
-    task = asyncio.create_task(server.serve_forever())
-    await server.serving
-    print(server.server.sockets[0].getsockname()[1], flush=True)
-    await task
+    await serve_on_loopback(slave, port)
 
 
 def main():
