@@ -87,6 +87,8 @@ run_main_job() {
         log "the same campaign imported twice went unnoticed"; return 1
     fi
     log "the unzipped folder is the same content: $(tail -n 1 "$out/again.err")"
+    log "sensor self-diagnosis of every logged channel (open/short, frozen, spikes, rate of change)"
+    "$cli" health --db "$out/driftlab.sqlite" --campaign "$id"
     log "main job 3/12: heat-transfer model identified on S1, tested on S2-S5 (stored in the database)"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model heat-transfer --train S1
     log "main job 4/12: the same with the best temperature regression (mlr)"

@@ -16,6 +16,7 @@ int iso230Command(const QStringList& args);
 int iso230_3Command(const QStringList& args);
 int compensateCommand(const QStringList& args);
 int liveCommand(const QStringList& args);
+int healthCommand(const QStringList& args);
 int controllerSimCommand(const QStringList& args);
 int pushesCommand(const QStringList& args);
 
@@ -103,6 +104,11 @@ const std::vector<Command>& commands() {
          QStringLiteral("Live thermal compensation replayed on a measured run: the heat-transfer "
                         "model fitted on the training runs updates the correction online, only "
                         "between cuts, and is scored on the run's measured thermal error.")},
+        {QStringLiteral("health"), healthCommand,
+         QStringLiteral("health BUNDLE [--run R,..] [--redundant A=B]..."),
+         QStringLiteral("Sensor self-diagnosis of the logged samples: out of range (open, short), "
+                        "frozen, spikes, rate of change, drift between redundant sensors; per "
+                        "run and channel, how many samples and when.")},
         {QStringLiteral("run"), nullptr,
          QStringLiteral("run --procedure FILE --rig sim|modbus://HOST:PORT --db FILE"),
          QStringLiteral("Run a test procedure on a rig and log it.")},
