@@ -60,8 +60,6 @@ public:
     /// What is applied: zero until the first update.
     const LiveUpdate& applied() const { return applied_; }
     bool updatePending() const { return pendingSince_s_.has_value(); }
-    const physics::ScrewThermalModel& model() const { return model_; }
-    const LiveSettings& settings() const { return settings_; }
 
 private:
     LiveUpdate makeUpdate(double due_s);
