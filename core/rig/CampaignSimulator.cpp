@@ -8,64 +8,21 @@
 
 #include "core/rig/AxisDrive.h"
 #include "core/rig/MovingStateProgramme.h"
-#include "core/rig/SensorModel.h"
+#include "core/rig/SimulatedAxisRun.h"
 #include "core/rig/SpindleTestSimulator.h"
 
 namespace driftlab::rig {
 namespace {
 
-constexpr double kEdlen_ppm_per_K = -0.95;  // refractive-index change of air per kelvin
-
-double roundTo(double value, double quantum) {
-    return std::round(value / quantum) * quantum;
-}
-
-/// Room temperature of one run: an offset and a slow swing with its own phase.
-struct RoomTemperature {
-    double offset_K, phase_rad;
-    const EnvironmentSpec* env;
-    double at(double t_s) const {
-        return env->ambient_mean_C + offset_K +
-               env->ambient_swing_K * std::sin(2 * M_PI * t_s / env->ambient_period_s + phase_rad);
-    }
-};
-
-/// First-order lag stepped exactly for an input held over the step.
-struct LaggedTemperature {
-    double value_C, lag_s;
-    void step(double target_C, double dt_s) {
-        value_C = target_C + (value_C - target_C) * std::exp(-dt_s / lag_s);
-    }
-};
-
-/// Cold geometric error of the axis (one per machine) and the interferometer's view of it.
-struct InterferometerModel {
-    InterferometerSpec spec;
-    double pitch_phase_rad;
-    double geometric_um(double x_mm) const {
-        return spec.pitch_error_amplitude_um *
-                   std::sin(2 * M_PI * x_mm / spec.pitch_error_period_mm + pitch_phase_rad) +
-               spec.lead_error_um_per_m * x_mm * 1e-3;
-    }
-    double backlash_um(Direction d) const {
-        return (d == Direction::Positive ? 0.5 : -0.5) * spec.backlash_um;
-    }
-};
-
 struct RunContext {
     const RigSpec& spec;
     const physics::ScrewThermalParameters& screw;
     const std::vector<QString>& columns;
-    const InterferometerModel& interferometer;
+    double pitchPhase_rad;
     const SimulationCallbacks& callbacks;
     double totalSimulated_s;
     double doneBefore_s;
 };
-
-/// Bearing-seat sensors sit 2.5 mm inside the screw ends.
-double bearingSeat_mm(const physics::ScrewThermalParameters& p, bool fixedEnd) {
-    return fixedEnd ? p.fixed_end_axis_mm + 2.5 : p.fixed_end_axis_mm + p.length_m * 1e3 - 2.5;
-}
 
 void validateSpec(const RigSpec& spec, const physics::ScrewThermalParameters& screw) {
     screw.validate();
@@ -131,34 +88,6 @@ Run simulateMovingRun(const RunContext& ctx, const MovingStateRun& state, unsign
     // Targets inside the travel by the overrun, so the pass never leaves it.
     programmeSpec.targets_mm =
         equallySpacedTargets(spec.travel_mm, spec.targets, programmeSpec.overrun_mm);
-    const Programme programme = buildMovingStateProgramme(programmeSpec);
-    const std::span<const MotionSegment> motion(programme.motion);
-
-    std::mt19937_64 rng(runSeed);
-    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-    std::normal_distribution<double> gauss(0.0, 1.0);
-    const EnvironmentSpec& env = spec.environment;
-    const RoomTemperature room{env.run_offset_spread_K * uniform(rng), M_PI * uniform(rng), &env};
-
-    physics::ScrewThermalModel screw(ctx.screw, room.at(0));
-    AxisDrive drive(spec.drive, ctx.screw.lead_m * 1e3, static_cast<unsigned>(rng()));
-    LaggedTemperature air{room.at(0) + 0.1, env.air_lag_s};
-    LaggedTemperature structure{room.at(0) - 0.2, env.structure_lag_s};
-    const double air0 = air.value_C, structure0 = structure.value_C;
-
-    const auto names = spec.names.all();
-    std::vector<SensorModel> sensors;
-    for (const auto& name : names) {
-        SensorSpec s;
-        s.noise_K = spec.temperature_noise_K;
-        s.dropout_probability = spec.dropout_probability;
-        if (auto it = spec.effects.sensor_lag_s.find(name); it != spec.effects.sensor_lag_s.end())
-            s.lag_s = it->second;
-        if (auto it = spec.effects.sensor_offset_K.find(name);
-            it != spec.effects.sensor_offset_K.end())
-            s.offset_K = it->second;
-        sensors.emplace_back(s, static_cast<unsigned>(rng()));
-    }
 
     Run run;
     run.id = state.id;
@@ -173,101 +102,23 @@ Run simulateMovingRun(const RunContext& ctx, const MovingStateRun& state, unsign
                           .arg(state.range_mm.from_mm)
                           .arg(state.range_mm.to_mm)
                           .arg(state.cooldown_s / 60);
-    run.motion = programme.motion;
-    run.samples.columns = ctx.columns;
-    run.samples.values.assign(ctx.columns.size(), {});
-    std::vector<int> channelColumn;
-    for (const auto& name : names) channelColumn.push_back(run.samples.columnIndex(name));
-    const int positionColumn = run.samples.columnIndex(kPositionColumn);
-    const int feedColumn = run.samples.columnIndex(kFeedColumn);
-    const int torqueColumn = run.samples.columnIndex(kTorqueColumn);
+    SimulatedAxisRun axis(spec, ctx.screw, ctx.columns,
+                          buildMovingStateProgramme(programmeSpec), ctx.pitchPhase_rad, runSeed);
+    run.motion = axis.programme().motion;
+    if (ctx.callbacks.sample)
+        axis.setSampleObserver(
+            [&](const physics::ScrewThermalModel& screw) { ctx.callbacks.sample(run.id, screw); });
 
-    const double fixedSeat_mm = bearingSeat_mm(ctx.screw, true);
-    const double freeSeat_mm = bearingSeat_mm(ctx.screw, false);
-    double lastSample_s = 0;
-    double torqueSquaredSinceSample = 0;
-    auto logSample = [&](double t) {
-        const AxisState axis = axisStateAt(programme.motion, t);
-        // Bearing-seat sensors read the screw where they sit (DESIGN.md §4).
-        const double truth[] = {screw.temperatureUnderNut_C(axis.position_mm),
-                                screw.temperatureAt_C(screw.screwCoordinate_m(fixedSeat_mm)),
-                                screw.temperatureAt_C(screw.screwCoordinate_m(freeSeat_mm)),
-                                room.at(t),
-                                air.value_C,
-                                structure.value_C};
-        const double dt = t - lastSample_s;
-        // Columns this run does not log (the spindle channels) stay empty.
-        for (auto& column : run.samples.values)
-            column.push_back(std::numeric_limits<double>::quiet_NaN());
-        auto set = [&](int column, double value) {
-            run.samples.values[static_cast<std::size_t>(column)].back() = value;
-        };
-        for (std::size_t c = 0; c < names.size(); ++c)
-            set(channelColumn[c], sensors[c].read(truth[c], dt));
-        set(positionColumn, roundTo(axis.position_mm, 0.001));
-        set(feedColumn, axis.feed_mm_min);
-        set(torqueColumn, roundTo(drive.loggedTorque_Nm(torqueSquaredSinceSample, dt), 0.001));
-        torqueSquaredSinceSample = 0;
-        run.samples.time_s.push_back(t);
-        lastSample_s = t;
-        if (ctx.callbacks.sample) ctx.callbacks.sample(run.id, screw);
-    };
-
-    const auto& measurements = programme.measurements;
-    std::size_t nextMeasurement = 0;
-    const InterferometerModel& ifm = ctx.interferometer;
-    const double deadPath_mm = ifm.spec.dead_path_mm;
-    auto measure = [&](const MeasurementEvent& e) {
-        double deviation = ifm.geometric_um(e.target_mm) + ifm.backlash_um(e.direction) +
-                           screw.thermalError_um(e.target_mm) +
-                           spec.effects.frame_growth_um_per_K * (structure.value_C - structure0) +
-                           spec.effects.air_refraction * kEdlen_ppm_per_K * (air.value_C - air0) *
-                               (e.target_mm + deadPath_mm) * 1e-3 +
-                           ifm.spec.noise_um * gauss(rng);
-        run.positioning.push_back(
-            {e.time_s, e.cycle, e.target_mm, e.direction, roundTo(deviation, 0.001)});
-    };
-
-    logSample(0);
-    double nextSample_s = spec.sample_interval_s;
-    const double duration = programme.duration_s;
-    double t = 0;
-    int stepsSinceProgress = 0;
-    while (t < duration - 1e-9) {
-        const double dt = std::min(spec.physics_step_s, duration - t);
-        const double t1 = t + dt;
-        physics::StepConditions step;
-        step.dt_s = dt;
-        step.ambient_begin_C = room.at(t);
-        step.ambient_end_C = room.at(t1);
-        step.motion = motion;
-        const double torqueSquared = drive.torqueSquaredIntegral(motion, t, t1);
-        torqueSquaredSinceSample += torqueSquared;
-        step.mean_torque_squared_Nm2 = torqueSquared / dt;
-        screw.step(step);
-        const auto& cells = screw.temperatures_C();
-        double meanScrew = 0;
-        for (double c : cells) meanScrew += c;
-        meanScrew /= static_cast<double>(cells.size());
-        const double amb = room.at(t1);
-        air.step(amb + 0.1 + env.air_screw_coupling * (meanScrew - amb), dt);
-        structure.step(amb - 0.2 + env.structure_screw_coupling * (meanScrew - amb), dt);
-        t = t1;
-        // Readings are taken while the nut dwells at the target, so the state
-        // at the end of the step holding the reading is the state it sees.
-        while (nextMeasurement < measurements.size() &&
-               measurements[nextMeasurement].time_s <= t + 1e-9)
-            measure(measurements[nextMeasurement++]);
-        if (t >= nextSample_s - 1e-9) {
-            logSample(roundTo(t, 1e-6));
-            nextSample_s += spec.sample_interval_s;
-        }
-        if (ctx.callbacks.progress && ++stepsSinceProgress >= 600) {
-            stepsSinceProgress = 0;
-            if (!ctx.callbacks.progress((ctx.doneBefore_s + t) / ctx.totalSimulated_s))
-                throw SimulationCancelled();
-        }
+    RunOutput out;
+    const double chunk_s = 600 * spec.physics_step_s;
+    while (!axis.finished()) {
+        axis.advanceTo(axis.time_s() + chunk_s, out);
+        if (ctx.callbacks.progress && !axis.finished() &&
+            !ctx.callbacks.progress((ctx.doneBefore_s + axis.time_s()) / ctx.totalSimulated_s))
+            throw SimulationCancelled();
     }
+    run.samples = toSampleSeries(out, ctx.columns);
+    run.positioning = std::move(out.readings);
     return run;
 }
 
@@ -334,15 +185,13 @@ Campaign simulateCampaign(const RigSpec& spec, const SimulationCallbacks& callba
                                    {kPositionColumn, kFeedColumn, kTorqueColumn});
 
     std::mt19937_64 rng(spec.seed);
-    const InterferometerModel interferometer{
-        spec.interferometer, std::uniform_real_distribution<double>(0, 2 * M_PI)(rng)};
+    const double pitchPhase_rad = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
     double total_s = 0;
     for (const auto& r : spec.runs) total_s += r.warmup_s + r.cooldown_s;
     double done_s = 0;
     for (const auto& state : spec.runs) {
-        const RunContext ctx{spec,           screw,     campaign.sample_columns,
-                             interferometer, callbacks, std::max(total_s, 1.0),
-                             done_s};
+        const RunContext ctx{spec,      screw,  campaign.sample_columns, pitchPhase_rad,
+                             callbacks, std::max(total_s, 1.0), done_s};
         campaign.runs.push_back(simulateMovingRun(ctx, state, static_cast<unsigned>(rng())));
         done_s += state.warmup_s + state.cooldown_s;
     }
