@@ -39,22 +39,27 @@ void SampleBlockWriter::flush() {
 
 void SampleBlockWriter::write(std::size_t runIndex) {
     Pending& p = m_pending[runIndex];
-    const std::size_t rows = p.time_s.size();
-    m_blob.resize(rows * (m_columns + 1));
-    std::memcpy(m_blob.data(), p.time_s.data(), rows * sizeof(double));
-    for (std::size_t k = 0; k < m_columns; ++k)
-        std::memcpy(m_blob.data() + (k + 1) * rows, p.values.data() + k * kRowsPerBlock,
-                    rows * sizeof(double));
-    m_insert.bind(1, m_runIds[runIndex]);
-    m_insert.bind(2, p.time_s.front());
-    m_insert.bind(3, p.time_s.back());
-    m_insert.bind(4, qint64(rows));
-    m_insert.bind(5, qint64(m_columns));
-    m_insert.bind(6, p.present);
-    m_insert.bind(7, m_blob.data(), m_blob.size() * sizeof(double));
-    if (!m_insert.execute()) throw m_insert.error();
+    writeSampleBlock(m_insert, m_runIds[runIndex], p.time_s.data(), p.time_s.size(),
+                     p.values.data(), kRowsPerBlock, m_columns, p.present, m_blob);
     p.time_s.clear();
     p.present = 0;
+}
+
+void writeSampleBlock(SqliteStatement& insert, qint64 runId, const double* time_s, std::size_t rows,
+                      const double* values, std::size_t stride, std::size_t columns, qint64 present,
+                      std::vector<double>& blob) {
+    blob.resize(rows * (columns + 1));
+    std::memcpy(blob.data(), time_s, rows * sizeof(double));
+    for (std::size_t k = 0; k < columns; ++k)
+        std::memcpy(blob.data() + (k + 1) * rows, values + k * stride, rows * sizeof(double));
+    insert.bind(1, runId);
+    insert.bind(2, time_s[0]);
+    insert.bind(3, time_s[rows - 1]);
+    insert.bind(4, qint64(rows));
+    insert.bind(5, qint64(columns));
+    insert.bind(6, present);
+    insert.bind(7, blob.data(), blob.size() * sizeof(double));
+    if (!insert.execute()) throw insert.error();
 }
 
 void loadSampleBlocks(sqlite3* handle, qint64 runId, SampleSeries& s) {

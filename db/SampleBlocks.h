@@ -47,6 +47,13 @@ private:
     std::vector<double> m_blob;
 };
 
+/// Runs `insert` (INSERT [OR REPLACE] INTO sample_block with its seven
+/// columns in table order) for one block of `rows` rows: column k's values
+/// start at values + k·stride. `scratch` holds the BLOB. Throws QString.
+void writeSampleBlock(SqliteStatement& insert, qint64 runId, const double* time_s, std::size_t rows,
+                      const double* values, std::size_t stride, std::size_t columns, qint64 present,
+                      std::vector<double>& scratch);
+
 /// Reads the samples of a run in time order into `series`, whose `columns`
 /// are set; throws QString on a database error or a malformed block.
 void loadSampleBlocks(sqlite3* handle, qint64 runId, SampleSeries& series);

@@ -23,6 +23,8 @@ namespace driftlab::cli {
 QJsonObject importFigures(int megabytes, int repetitions);
 /// PushThroughput.cpp: `pushes` pushes of a 256-point table to the simulated controller.
 QJsonObject pushFigures(int pushes);
+QJsonObject loggingFigures(int repetitions);
+void printLoggingLine(const QJsonObject& figures);
 
 namespace {
 
@@ -136,9 +138,9 @@ int benchCommand(const QStringList& args) {
         QStringLiteral("pushes"),
         QStringLiteral("Pushes of a 256-point table to the simulated controller (0: skip)."),
         QStringLiteral("N"), QStringLiteral("50")};
-    const QCommandLineOption only{QStringLiteral("only"),
-                                  QStringLiteral("Measure only this figure: push, online."),
-                                  QStringLiteral("FIGURE")};
+    const QCommandLineOption only{
+        QStringLiteral("only"), QStringLiteral("Measure only this figure: push, online, logging."),
+        QStringLiteral("FIGURE")};
     parseArguments(parser, args, {repeat, noPython, importMb, pushes, only});
     const int pushCount = parser.value(pushes).toInt();
     if (parser.value(only) == QLatin1String("push")) {
@@ -148,6 +150,15 @@ int benchCommand(const QStringList& args) {
             printJson(figures);
         else
             printPushLine(figures);
+        return 0;
+    }
+    if (parser.value(only) == QLatin1String("logging")) {
+        const QJsonObject figures = loggingFigures(std::max(1, parser.value(repeat).toInt()));
+        endProgressLine();
+        if (parser.isSet(QStringLiteral("json")))
+            printJson(figures);
+        else
+            printLoggingLine(figures);
         return 0;
     }
     if (parser.value(only) == QLatin1String("online")) {
@@ -168,7 +179,7 @@ int benchCommand(const QStringList& args) {
     }
     if (parser.isSet(only))
         throw CliError(QStringLiteral("--only: '%1' is not a figure it can measure alone (push, "
-                                      "online)")
+                                      "online, logging)")
                            .arg(parser.value(only)),
                        2);
     const int repetitions = std::max(1, parser.value(repeat).toInt());
@@ -189,6 +200,8 @@ int benchCommand(const QStringList& args) {
     figures[QStringLiteral("diagnosis_s")] = diagnosisSeconds();
     for (auto it = import.begin(); it != import.end(); ++it) figures[it.key()] = it.value();
     const QJsonObject push = pushCount > 0 ? pushFigures(pushCount) : QJsonObject();
+    const QJsonObject logging = loggingFigures(std::min(repetitions, 3));
+    for (auto it = logging.begin(); it != logging.end(); ++it) figures[it.key()] = it.value();
     for (auto it = push.begin(); it != push.end(); ++it) figures[it.key()] = it.value();
     if (!parser.isSet(noPython)) {
         printProgress(QStringLiteral("scipy comparison"), 0);
@@ -215,6 +228,7 @@ int benchCommand(const QStringList& args) {
                            "(%2× slower)")
                 .arg(figures[QStringLiteral("scipy_cell_steps_per_s")].toDouble() / 1e6, 0, 'f', 1)
                 .arg(figures[QStringLiteral("simulation_speedup_vs_scipy")].toDouble(), 0, 'f', 0));
+    printLoggingLine(figures);
     printLine(QStringLiteral("online model    %1 µs per observer step + 128-point table (target "
                              "< 50 µs)")
                   .arg(figures[QStringLiteral("online_step_us")].toDouble(), 0, 'f', 2));

@@ -19,6 +19,7 @@ int liveCommand(const QStringList& args);
 int healthCommand(const QStringList& args);
 int controllerSimCommand(const QStringList& args);
 int pushesCommand(const QStringList& args);
+int runCommand(const QStringList& args);
 
 namespace {
 
@@ -109,9 +110,12 @@ const std::vector<Command>& commands() {
          QStringLiteral("Sensor self-diagnosis of the logged samples: out of range (open, short), "
                         "frozen, spikes, rate of change, drift between redundant sensors; per "
                         "run and channel, how many samples and when.")},
-        {QStringLiteral("run"), nullptr,
-         QStringLiteral("run --procedure FILE --rig sim|modbus://HOST:PORT --db FILE"),
-         QStringLiteral("Run a test procedure on a rig and log it.")},
+        {QStringLiteral("run"), runCommand,
+         QStringLiteral("run --procedure FILE --rig sim|modbus://HOST:PORT --db FILE "
+                        "[--speedup N] [--resume RUN]"),
+         QStringLiteral("Run a test procedure (ISO 230-2, ISO 230-3, ETVE, spindle, moving "
+                        "states) on a rig and log it live into the store; prints the campaign "
+                        "id. Ctrl-C keeps what was logged; --resume continues the run.")},
         {QStringLiteral("report"), nullptr, QStringLiteral("report BUNDLE --pdf FILE"),
          QStringLiteral("The acceptance report (PDF, HTML).")},
         {QStringLiteral("batch"), nullptr, QStringLiteral("batch PATH..."),

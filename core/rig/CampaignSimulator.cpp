@@ -102,8 +102,8 @@ Run simulateMovingRun(const RunContext& ctx, const MovingStateRun& state, unsign
                           .arg(state.range_mm.from_mm)
                           .arg(state.range_mm.to_mm)
                           .arg(state.cooldown_s / 60);
-    SimulatedAxisRun axis(spec, ctx.screw, ctx.columns,
-                          buildMovingStateProgramme(programmeSpec), ctx.pitchPhase_rad, runSeed);
+    SimulatedAxisRun axis(spec, ctx.screw, ctx.columns, buildMovingStateProgramme(programmeSpec),
+                          ctx.pitchPhase_rad, runSeed);
     run.motion = axis.programme().motion;
     if (ctx.callbacks.sample)
         axis.setSampleObserver(
@@ -163,10 +163,8 @@ physics::ScrewThermalParameters effectiveScrewParameters(const RigSpec& spec) {
     return p;
 }
 
-Campaign simulateCampaign(const RigSpec& spec, const SimulationCallbacks& callbacks) {
+Campaign rigCampaignHeader(const RigSpec& spec, bool withSpindleChannels) {
     const physics::ScrewThermalParameters screw = effectiveScrewParameters(spec);
-    validateSpec(spec, screw);
-
     Campaign campaign;
     campaign.name = spec.campaign_name;
     campaign.machine = {QStringLiteral("DriftLab simulated rig"),
@@ -178,11 +176,18 @@ Campaign simulateCampaign(const RigSpec& spec, const SimulationCallbacks& callba
     campaign.travel_mm = spec.travel_mm;
     campaign.interferometer = Interferometer{spec.interferometer.dead_path_mm, true, {}};
     campaign.channels = rigChannels(spec, screw);
-    if (spec.spindle_run)
+    if (withSpindleChannels)
         for (auto& c : spindleTestChannels()) campaign.channels.push_back(c);
     for (const auto& c : campaign.channels) campaign.sample_columns.push_back(c.id);
     campaign.sample_columns.insert(campaign.sample_columns.end(),
                                    {kPositionColumn, kFeedColumn, kTorqueColumn});
+    return campaign;
+}
+
+Campaign simulateCampaign(const RigSpec& spec, const SimulationCallbacks& callbacks) {
+    const physics::ScrewThermalParameters screw = effectiveScrewParameters(spec);
+    validateSpec(spec, screw);
+    Campaign campaign = rigCampaignHeader(spec, spec.spindle_run);
 
     std::mt19937_64 rng(spec.seed);
     const double pitchPhase_rad = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
@@ -190,8 +195,9 @@ Campaign simulateCampaign(const RigSpec& spec, const SimulationCallbacks& callba
     for (const auto& r : spec.runs) total_s += r.warmup_s + r.cooldown_s;
     double done_s = 0;
     for (const auto& state : spec.runs) {
-        const RunContext ctx{spec,      screw,  campaign.sample_columns, pitchPhase_rad,
-                             callbacks, std::max(total_s, 1.0), done_s};
+        const RunContext ctx{spec,           screw,     campaign.sample_columns,
+                             pitchPhase_rad, callbacks, std::max(total_s, 1.0),
+                             done_s};
         campaign.runs.push_back(simulateMovingRun(ctx, state, static_cast<unsigned>(rng())));
         done_s += state.warmup_s + state.cooldown_s;
     }

@@ -31,6 +31,10 @@ struct SimulationCallbacks {
 /// physical effects (forced convection, nut heat exponent, motor heat) applied.
 physics::ScrewThermalParameters effectiveScrewParameters(const RigSpec& spec);
 
+/// The campaign a rig logs into, without runs: machine, screw, channels and
+/// sample columns (with the spindle-test channels when asked).
+Campaign rigCampaignHeader(const RigSpec& spec, bool withSpindleChannels);
+
 /// Throws std::invalid_argument on a spec that cannot run: bad screw
 /// parameters, a run range outside the travel or the screw, an effect on a
 /// channel the rig does not have, no runs, duplicate run ids.

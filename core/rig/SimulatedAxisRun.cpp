@@ -210,7 +210,8 @@ struct SimulatedAxisRun::State {
     }
 };
 
-SimulatedAxisRun::SimulatedAxisRun(const RigSpec& spec, const physics::ScrewThermalParameters& screw,
+SimulatedAxisRun::SimulatedAxisRun(const RigSpec& spec,
+                                   const physics::ScrewThermalParameters& screw,
                                    std::vector<QString> columns, Programme programme,
                                    double pitchPhase_rad, unsigned seed)
     : m(std::make_unique<State>(spec, screw, std::move(columns), std::move(programme),

@@ -1,0 +1,256 @@
+#include "acquisition/engine/ProcedureEngine.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <chrono>
+
+#include "acquisition/engine/RunPlayback.h"
+#include "db/CampaignStore.h"
+#include "db/RunLogger.h"
+
+namespace driftlab::engine {
+namespace {
+
+qint64 nowMs() {
+    using namespace std::chrono;
+    return duration_cast<milliseconds>(steady_clock::now().time_since_epoch()).count();
+}
+
+bool fail(QString* error, const QString& why) {
+    if (error) *error = why;
+    return false;
+}
+
+/// Opens the store for writing, creating it when it does not exist yet.
+std::unique_ptr<db::CampaignStore> openStore(const QString& path, QString* error) {
+    if (!QFileInfo::exists(path)) {
+        auto created = db::CampaignStore::open(path, db::StoreAccess::CreateIfMissing, error);
+        if (!created || !created->publish(error)) return nullptr;
+    }
+    return db::CampaignStore::open(path, db::StoreAccess::ReadWrite, error);
+}
+
+db::RunHeader headerOf(const procedures::PlannedRun& run, const procedures::Procedure& p) {
+    return {run.id,
+            run.kind,
+            run.feed_mm_min,
+            run.range_mm,
+            run.description,
+            {{QStringLiteral("procedure"), p.name},
+             {QStringLiteral("procedure_kind"), toString(p.kind)}}};
+}
+
+}  // namespace
+
+QString toString(EngineState state) {
+    switch (state) {
+        case EngineState::Idle:
+            return QStringLiteral("idle");
+        case EngineState::Running:
+            return QStringLiteral("running");
+        case EngineState::Paused:
+            return QStringLiteral("paused");
+        case EngineState::Aborting:
+            return QStringLiteral("aborting");
+        case EngineState::Finished:
+            return QStringLiteral("finished");
+        case EngineState::Interrupted:
+            return QStringLiteral("interrupted");
+    }
+    return {};
+}
+
+ProcedureEngine::ProcedureEngine(procedures::Procedure procedure, TestRig& rig,
+                                 EngineOptions options)
+    : m_procedure(std::move(procedure)), m_rig(rig), m_options(std::move(options)) {}
+
+void ProcedureEngine::setState(EngineState state) {
+    m_state = state;
+}
+
+void ProcedureEngine::pause() {
+    m_pauseRequested = true;
+    m_wake.notify_all();
+}
+void ProcedureEngine::resume() {
+    m_pauseRequested = false;
+    m_wake.notify_all();
+}
+void ProcedureEngine::abort() {
+    m_abortRequested = true;
+    m_wake.notify_all();
+}
+
+bool ProcedureEngine::waitWhilePaused() {
+    if (!m_pauseRequested || m_abortRequested) return !m_abortRequested;
+    setState(EngineState::Paused);
+    std::unique_lock lock(m_mutex);
+    while (m_pauseRequested && !m_abortRequested) {
+        if (m_rig.realTime() && QCoreApplication::instance()) {
+            // Device signals arrive through this thread's event loop.
+            lock.unlock();
+            QCoreApplication::processEvents();
+            lock.lock();
+        }
+        m_wake.wait_for(lock, std::chrono::milliseconds(20));
+    }
+    if (m_abortRequested) return false;
+    setState(EngineState::Running);
+    return true;
+}
+
+bool ProcedureEngine::waitUntil(qint64 wall_ms) {
+    std::unique_lock lock(m_mutex);
+    for (qint64 now = nowMs(); now < wall_ms; now = nowMs()) {
+        if (m_abortRequested || m_pauseRequested) break;
+        if (m_rig.realTime() && QCoreApplication::instance()) {
+            lock.unlock();
+            QCoreApplication::processEvents();
+            lock.lock();
+        }
+        m_wake.wait_for(lock, std::chrono::milliseconds(std::min<qint64>(wall_ms - now, 20)));
+    }
+    return !m_abortRequested;
+}
+
+std::optional<qint64> ProcedureEngine::run(QString* error) {
+    std::vector<procedures::PlannedRun> planned;
+    try {
+        planned = procedures::planRuns(m_procedure);
+    } catch (const std::exception& e) {
+        fail(error, QStringLiteral("procedure %1: %2").arg(m_procedure.name, e.what()));
+        return std::nullopt;
+    }
+    auto store = openStore(m_options.store_path, error);
+    if (!store) return std::nullopt;
+    QString why;
+    db::markInterruptedRuns(*store, &why);
+
+    qint64 campaignId = 0;
+    std::size_t first = 0;
+    std::optional<db::LoggedRunState> resumed;
+    if (m_options.resume_run_id) {
+        resumed = db::loggedRunState(*store, *m_options.resume_run_id, error);
+        if (!resumed) return std::nullopt;
+        if (resumed->status != QLatin1String("interrupted")) {
+            fail(error, QStringLiteral("run %1 (%2) is %3, not interrupted: nothing to resume")
+                            .arg(resumed->run_id)
+                            .arg(resumed->name, resumed->status));
+            return std::nullopt;
+        }
+        campaignId = resumed->campaign_id;
+        while (first < planned.size() && planned[first].id != resumed->name) ++first;
+        if (first == planned.size()) {
+            fail(error, QStringLiteral("run %1 (%2) is not a run of procedure '%3'")
+                            .arg(resumed->run_id)
+                            .arg(resumed->name, m_procedure.name));
+            return std::nullopt;
+        }
+    } else {
+        Campaign header = m_rig.campaignHeader(planned);
+        header.name = m_procedure.name;
+        header.extra[QStringLiteral("procedure")] = procedures::toJson(m_procedure);
+        const auto id = store->importCampaign(header, error);
+        if (!id) return std::nullopt;
+        campaignId = *id;
+    }
+    const auto campaign = store->loadCampaign(campaignId, error);
+    if (!campaign) return std::nullopt;
+
+    setState(EngineState::Running);
+    for (std::size_t i = first; i < planned.size(); ++i) {
+        const bool resuming = resumed && i == first;
+        auto logger = resuming ? db::RunLogger::resume(*store, resumed->run_id, error)
+                               : db::RunLogger::begin(*store, campaignId,
+                                                      headerOf(planned[i], m_procedure), error);
+        if (!logger) {
+            setState(EngineState::Interrupted);
+            return std::nullopt;
+        }
+        RunPlayback playback{planned[i], i, planned.size(), *logger, campaign->sample_columns};
+        if (resuming) playback.resumeFrom(*resumed, m_rig.realTime());
+        const bool ok = playRun(playback, error);
+        if (!ok || m_abortRequested) {
+            if (m_abortRequested)
+                logger->appendEvent(
+                    QStringLiteral("warning"), QStringLiteral("engine"),
+                    QStringLiteral("aborted by the operator at %1 s").arg(playback.time_s));
+            logger->finish(QStringLiteral("interrupted"), ok ? error : nullptr);
+            setState(EngineState::Interrupted);
+            if (!ok) return std::nullopt;
+            return campaignId;
+        }
+        if (!logger->finish(QStringLiteral("complete"), error)) {
+            setState(EngineState::Interrupted);
+            return std::nullopt;
+        }
+    }
+    setState(EngineState::Finished);
+    return campaignId;
+}
+
+}  // namespace driftlab::engine
+
+namespace driftlab::engine {
+
+bool ProcedureEngine::playRun(RunPlayback& pb, QString* error) {
+    auto source = m_rig.open(pb.run, pb.index, pb.columns, error);
+    if (!source) return false;
+    const double step_s = m_procedure.sample_interval_s;
+    rig::RunOutput out;
+    // The wall clock paces the run from (wallStart, runStart); re-based after a pause.
+    qint64 wallStart = nowMs();
+    double runStart_s = pb.time_s;
+    const double replayUntil_s = m_rig.realTime() ? -1 : pb.time_s;
+    int failedCommits = 0;
+    auto report = [&] {
+        if (m_progress)
+            m_progress({pb.run.id, pb.index, pb.count, pb.time_s, pb.run.duration_s, state()});
+    };
+    report();
+    while (!source->finished()) {
+        if (m_pauseRequested) {
+            const double pausedAt_s = pb.time_s;
+            report();
+            if (!waitWhilePaused()) return true;
+            if (m_rig.realTime())
+                pb.logger.appendEvent(QStringLiteral("info"), QStringLiteral("engine"),
+                                      QStringLiteral("paused at %1 s").arg(pausedAt_s));
+            wallStart = nowMs();
+            runStart_s = pb.time_s;
+        }
+        if (m_abortRequested) return true;
+        const double next_s = pb.time_s + step_s;
+        const bool paced = m_rig.realTime() || m_options.speedup > 0;
+        if (paced && next_s > replayUntil_s) {
+            const double rate = m_rig.realTime() ? 1.0 : m_options.speedup;
+            if (!waitUntil(wallStart + qint64((next_s - runStart_s) / rate * 1000.0))) return true;
+            if (m_pauseRequested) continue;
+        }
+        out.clear();
+        source->advanceTo(next_s, out);
+        pb.time_s = next_s;
+        if (auto note = pb.checkStabilisation(out)) {
+            source->replan(pb.run);
+            pb.logger.appendEvent(QStringLiteral("info"), QStringLiteral("iso230-3"), *note);
+        }
+        pb.log(out, m_rows);
+        pb.logMotionUntil(pb.time_s);
+        for (const SourceEvent& e : source->takeEvents())
+            pb.logger.appendEvent(e.level, e.source, e.message);
+        QString why;
+        if (pb.logger.commitIfDue(&why, m_options.commit_interval_ms)) {
+            failedCommits = 0;
+        } else if (++failedCommits > 30) {
+            // Rows stay in memory between failed commits; a store that keeps
+            // refusing them for half a minute is a failure, not a hiccup.
+            return fail(error, why);
+        }
+        report();
+    }
+    pb.logMotionUntil(std::numeric_limits<double>::max());
+    return true;
+}
+
+}  // namespace driftlab::engine
