@@ -30,6 +30,7 @@ enum class ApproachOrder { Linear, Pilgrim };
 /// shifted from the even grid by a seeded random fraction < 10 % of the
 /// interval (so a periodic pitch error is not sampled at one phase).
 struct PositioningSpec {
+    QString run_id = QStringLiteral("P1");
     RangeMm span_mm{5, 695};        ///< first and last target
     double targets_per_metre = 10;  ///< ≥ 5
     double irregularity = 0.08;     ///< |shift| ≤ this × interval; < 0.1

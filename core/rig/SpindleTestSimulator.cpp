@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
 
 #include "core/rig/SensorModel.h"
@@ -56,9 +57,11 @@ std::vector<Channel> spindleTestChannels() {
 Run simulateSpindleTest(const SpindleTestSpec& spec, const std::vector<QString>& sampleColumns) {
     Run run;
     run.id = spec.run_id;
-    run.kind = RunKind::Spindle;
+    run.kind = spec.kind;
     run.description =
-        QStringLiteral("ISO 230-3 spindle test: speed blocks with stops, five drift probes");
+        spec.kind == RunKind::Etve
+            ? QStringLiteral("ETVE: machine at rest while the room varies, five drift probes")
+            : QStringLiteral("ISO 230-3 spindle test: speed blocks with stops, five drift probes");
     run.samples.columns = sampleColumns;
     run.samples.values.assign(sampleColumns.size(), {});
 
@@ -79,7 +82,15 @@ Run simulateSpindleTest(const SpindleTestSpec& spec, const std::vector<QString>&
     auto probe = [&](double drift_um) {
         return std::round((drift_um + probeNoise(rng)) * 1000) / 1000;
     };
+    auto ambientAt = [&](double time_s) {
+        return spec.ambient_C + spec.ambient_swing_K *
+                                    std::sin(2 * std::numbers::pi * time_s / spec.ambient_period_s);
+    };
+    // housing_K and column_K: rises from the spindle's heat; the *Room_C nodes
+    // follow the room. Without a swing the room nodes stay at ambient_C exactly
+    // and add exactly 0, so a constant room gives the same numbers as before.
     double housing_K = 0, column_K = 0, t = 0, blockStart = 0;
+    double housingRoom_C = spec.ambient_C, columnRoom_C = spec.ambient_C;
     std::size_t block = 0;
     const double dt = spec.sample_interval_s;
     double total_s = 0;
@@ -94,17 +105,23 @@ Run simulateSpindleTest(const SpindleTestSpec& spec, const std::vector<QString>&
                         (housing_K - steadyHousingRise(speed)) * std::exp(-dt / kHousingTau_s);
             column_K = kColumnCoupling * housing_K +
                        (column_K - kColumnCoupling * housing_K) * std::exp(-dt / kColumnTau_s);
+            // The room over the interval, held at its middle value.
+            const double room_C = ambientAt(t - dt / 2);
+            housingRoom_C = room_C + (housingRoom_C - room_C) * std::exp(-dt / kHousingTau_s);
+            columnRoom_C = room_C + (columnRoom_C - room_C) * std::exp(-dt / kColumnTau_s);
         }
-        const double driftZ_um = -(1.6 * housing_K + 2.2 * column_K);
+        const double housingTotal_K = housing_K + (housingRoom_C - spec.ambient_C);
+        const double columnTotal_K = column_K + (columnRoom_C - spec.ambient_C);
+        const double driftZ_um = -(1.6 * housingTotal_K + 2.2 * columnTotal_K);
         const double values[] = {
-            spindleSensor.read(spec.ambient_C + housing_K, dt),  // T_spindle
-            speed,                                               // S_speed
-            probe(0.15 * housing_K),                             // D_x
-            probe(-0.9 * column_K),                              // D_y
-            probe(driftZ_um),                                    // D_z
-            probe(-0.35 * column_K),                             // D_a
-            probe(0.05 * housing_K),                             // D_b
-            ambientSensor.read(spec.ambient_C, dt),              // T_ambient
+            spindleSensor.read(spec.ambient_C + housingTotal_K, dt),  // T_spindle
+            speed,                                                    // S_speed
+            probe(0.15 * housingTotal_K),                             // D_x
+            probe(-0.9 * columnTotal_K),                              // D_y
+            probe(driftZ_um),                                         // D_z
+            probe(-0.35 * columnTotal_K),                             // D_a
+            probe(0.05 * housingTotal_K),                             // D_b
+            ambientSensor.read(ambientAt(t), dt),                     // T_ambient
         };
         run.samples.time_s.push_back(t);
         for (std::size_t k = 0; k < sampleColumns.size(); ++k)

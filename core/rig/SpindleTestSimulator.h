@@ -22,6 +22,13 @@ struct SpindleTestSpec {
     std::vector<SpeedBlock> blocks{{1800, 3000}, {1800, 6000}, {900, 0}, {1800, 9000}, {3600, 0}};
     double sample_interval_s = 5;
     double ambient_C = 20;
+    /// The room's slow swing: ambient_C + swing·sin(2πt/period). Housing and
+    /// column follow it with their time constants, so a machine at rest still
+    /// drifts (an ETVE run). 0 leaves the room constant.
+    double ambient_swing_K = 0;
+    double ambient_period_s = 12 * 3600;
+    /// Spindle for a speed programme, Etve for a machine at rest in a varying room.
+    RunKind kind = RunKind::Spindle;
     unsigned seed = 1;
 };
 
