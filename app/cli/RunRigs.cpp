@@ -1,7 +1,12 @@
 #include "app/cli/RunRigs.h"
 
+#include <QFile>
+
+#include "acquisition/engine/DeviceRig.h"
 #include "acquisition/engine/SimulatedRig.h"
 #include "app/cli/CliCommon.h"
+#include "core/bundle/BundleError.h"
+#include "core/bundle/CampaignJson.h"
 #include "core/rig/RigEffects.h"
 
 namespace driftlab::cli {
@@ -15,10 +20,54 @@ const QCommandLineOption kEffect{
     QStringLiteral("Simulated rig: hide an effect, ID=VALUE (as `simulate --effect`)."),
     QStringLiteral("ID=VALUE")};
 
+const QCommandLineOption kDeviceMap{
+    QStringLiteral("device-map"),
+    QStringLiteral("Modbus rig: the temperature module's register map (JSON, e.g. "
+                   "resources/devices/temperature-8ch-pt100.json)."),
+    QStringLiteral("FILE")};
+const QCommandLineOption kMachine{
+    QStringLiteral("machine"),
+    QStringLiteral("Modbus rig: a campaign.json (no runs) naming the machine, the screw and the "
+                   "channels (ids as in the device map, with their roles)."),
+    QStringLiteral("FILE")};
+const QCommandLineOption kPoll{QStringLiteral("poll-interval-s"),
+                               QStringLiteral("Modbus rig: seconds between polls of the module."),
+                               QStringLiteral("S"), QStringLiteral("1")};
+
+std::unique_ptr<engine::TestRig> makeDeviceRig(const QCommandLineParser& parser,
+                                               const QString& rig) {
+    QString error;
+    engine::DeviceRigSpec spec;
+    const auto url = modbus::parseModbusUrl(rig, &error);
+    if (!url) throw CliError(QStringLiteral("--rig: ") + error, 2);
+    spec.temperature_url = *url;
+    if (!parser.isSet(kDeviceMap))
+        throw CliError(QStringLiteral("--rig %1 needs --device-map FILE (the module's register "
+                                      "map)")
+                           .arg(rig),
+                       2);
+    const auto map = devices::loadChannelRegisterMap(parser.value(kDeviceMap), &error);
+    if (!map) throw CliError(error, 2);
+    spec.temperature_map = *map;
+    spec.poll_interval_s = positiveNumberOption(parser, kPoll);
+    if (parser.isSet(kMachine)) {
+        QFile file(parser.value(kMachine));
+        if (!file.open(QIODevice::ReadOnly))
+            throw CliError(
+                QStringLiteral("--machine: %1: %2").arg(file.fileName(), file.errorString()), 2);
+        try {
+            spec.campaign_template = campaignFromJson(file.readAll(), file.fileName());
+        } catch (const BundleError& e) {
+            throw CliError(QStringLiteral("--machine: %1").arg(e.toString()), 2);
+        }
+    }
+    return std::make_unique<engine::DeviceRig>(spec);
+}
+
 }  // namespace
 
 QList<QCommandLineOption> rigOptions() {
-    return {kSeed, kEffect};
+    return {kSeed, kEffect, kDeviceMap, kMachine, kPoll};
 }
 
 std::unique_ptr<engine::TestRig> makeRig(const QCommandLineParser& parser, const QString& rig,
@@ -37,6 +86,7 @@ std::unique_ptr<engine::TestRig> makeRig(const QCommandLineParser& parser, const
         spec.sample_interval_s = procedure.sample_interval_s;
         return std::make_unique<engine::SimulatedRig>(spec);
     }
+    if (rig.startsWith(QLatin1String("modbus://"))) return makeDeviceRig(parser, rig);
     throw CliError(QStringLiteral("--rig: '%1' is not a rig (sim, modbus://HOST:PORT)").arg(rig),
                    2);
 }

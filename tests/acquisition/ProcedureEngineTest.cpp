@@ -137,7 +137,7 @@ TEST(ProcedureEngine, AbortedRunResumedIsTheRunNeverAborted) {
         std::optional<qint64> id;
         QString error;
         std::thread worker([&] { id = first.run(&error); });
-        std::this_thread::sleep_for(std::chrono::milliseconds(300 + 1200 * trial));
+        std::this_thread::sleep_for(std::chrono::milliseconds(200 + 450 * trial));
         first.abort();
         worker.join();
         ASSERT_TRUE(id) << error.toStdString();
@@ -198,7 +198,7 @@ TEST(ProcedureEngine, Iso230_3WarmupEndsWhenTheCriterionHolds) {
     ASSERT_TRUE(id) << error.toStdString();
     const Campaign c = loadOnly(path, *id);
     ASSERT_EQ(c.runs.size(), 1u);
-    const Run& run = c.runs.front();
+    const driftlab::Run& run = c.runs.front();
     // It stopped warming well before the six hours and cooled for its 30 min.
     const double end_s = run.samples.time_s.back();
     EXPECT_LT(end_s, 5 * 3600.0);
