@@ -1,20 +1,21 @@
 #pragma once
-// Polling a temperature module off the GUI thread (STYLE.md, acquisition row,
-// after QGroundControl's link workers): DeviceWorker lives on its own QThread
-// and talks only through queued signals; TemperatureDevice is the thin facade
-// that owns the thread. A lost device is reconnected with a doubling backoff;
-// each connect cycle (from losing the data to getting it back) reports one
-// error, not one per failed attempt, and a gap (from, to) when data resumes.
+// Polling a device off the GUI thread (STYLE.md, acquisition row, after
+// QGroundControl's link workers): DeviceWorker lives on its own QThread, polls
+// a PolledDevice and talks only through queued signals; DeviceThread (in
+// DeviceThread.h) owns the thread. A lost device is reconnected with a
+// doubling backoff; each connect cycle (from losing the data to getting it
+// back) reports one error, not one per failed attempt, and a gap (from, to)
+// when data resumes.
 
 #include <QDateTime>
 #include <QObject>
 #include <QString>
+#include <QVariant>
 #include <atomic>
 #include <memory>
 
-#include "acquisition/devices/TemperatureModule.h"
+#include "acquisition/devices/PolledDevice.h"
 
-class QThread;
 class QTimer;
 
 namespace driftlab::devices {
@@ -42,7 +43,8 @@ struct DeviceWorkerOptions {
 class DeviceWorker : public QObject {
     Q_OBJECT
 public:
-    DeviceWorker(ChannelRegisterMap map, modbus::ModbusUrl url, DeviceWorkerOptions options);
+    /// `make_device` is called in start(), on the worker's thread.
+    DeviceWorker(PolledDeviceFactory make_device, DeviceWorkerOptions options);
     ~DeviceWorker() override;
 
     /// Thread-safe: makes the worker stop before its next connect or poll.
@@ -54,7 +56,8 @@ public slots:
     void shutdown();
 
 signals:
-    void readingReady(const driftlab::devices::TemperatureReading& reading);
+    /// The device's reading (PolledReading::value).
+    void readingReady(const QVariant& reading);
     void errorOccurred(const QString& message);
     /// No data between `from_utc` (last reading before) and `to_utc` (first after).
     void gap(const QDateTime& from_utc, const QDateTime& to_utc);
@@ -70,10 +73,9 @@ private:
     void failed(const QString& message);
     void setHealth(DeviceHealth health);
 
-    ChannelRegisterMap m_map;
-    modbus::ModbusUrl m_url;
+    PolledDeviceFactory m_make_device;
     DeviceWorkerOptions m_options;
-    std::unique_ptr<TemperatureModule> m_module;  // created on the worker's thread
+    std::unique_ptr<PolledDevice> m_device;  // created on the worker's thread
     QTimer* m_timer = nullptr;
     std::atomic<bool> m_stop{false};
     DeviceHealth m_health = DeviceHealth::Stopped;
@@ -85,42 +87,6 @@ private:
     bool m_link_up = false;         ///< the timer polls when true, else reconnects
 };
 
-/// The facade: owns the worker's thread; its signals arrive on the thread
-/// that created it.
-class TemperatureDevice : public QObject {
-    Q_OBJECT
-public:
-    TemperatureDevice(ChannelRegisterMap map, modbus::ModbusUrl url,
-                      DeviceWorkerOptions options = {}, QObject* parent = nullptr);
-    /// Stops with stopAndWait(kDefaultStopTimeoutMs).
-    ~TemperatureDevice() override;
-
-    static constexpr int kDefaultStopTimeoutMs = 5000;
-
-    /// Starts polling; once per device (a stopped device is not restarted).
-    void start();
-    /// Stop flag, a queued shutdown (closes the link, quits the thread), a
-    /// wait of at most `timeout_ms`. False when the worker is
-    /// still inside a request then; the thread is left to end on its own (it
-    /// is bounded by the response timeout) and deletes itself — never
-    /// terminate(), which could leave libmodbus or a lock half-done.
-    bool stopAndWait(int timeout_ms = kDefaultStopTimeoutMs);
-    bool isRunning() const;
-
-signals:
-    void readingReady(const driftlab::devices::TemperatureReading& reading);
-    void errorOccurred(const QString& message);
-    void gap(const QDateTime& from_utc, const QDateTime& to_utc);
-    void healthChanged(driftlab::devices::DeviceHealth health);
-    void attemptFailed(int attempt, double next_retry_s);
-
-private:
-    QThread* m_thread = nullptr;
-    DeviceWorker* m_worker = nullptr;
-    bool m_started = false;
-};
-
 }  // namespace driftlab::devices
 
-Q_DECLARE_METATYPE(driftlab::devices::TemperatureReading)
 Q_DECLARE_METATYPE(driftlab::devices::DeviceHealth)

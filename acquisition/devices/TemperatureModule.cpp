@@ -4,7 +4,7 @@
 #include <limits>
 #include <numeric>
 
-#include "acquisition/modbus/ModbusTcpLink.h"
+#include "acquisition/modbus/ModbusLink.h"
 
 namespace driftlab::devices {
 
@@ -34,7 +34,7 @@ TemperatureModule::TemperatureModule(ChannelRegisterMap map, modbus::ModbusUrl u
                                      double response_timeout_s)
     : m_map(std::move(map)),
       m_plan(planReads(m_map, modbus::kMaxReadRegisters)),
-      m_link(std::make_unique<modbus::ModbusTcpLink>(std::move(url), response_timeout_s)) {}
+      m_link(std::make_unique<modbus::ModbusLink>(std::move(url), response_timeout_s)) {}
 
 TemperatureModule::~TemperatureModule() = default;
 
@@ -92,6 +92,12 @@ std::optional<TemperatureReading> TemperatureModule::read(QString* error) {
     // Stamped after the last request: the values are at most this old.
     reading.time_utc = QDateTime::currentDateTimeUtc();
     return reading;
+}
+
+std::optional<PolledReading> TemperatureModule::poll(QString* error) {
+    std::optional<TemperatureReading> reading = read(error);
+    if (!reading) return std::nullopt;
+    return PolledReading{reading->time_utc, QVariant::fromValue(*reading)};
 }
 
 QString toString(ChannelStatus status) {

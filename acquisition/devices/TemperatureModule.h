@@ -1,8 +1,8 @@
 #pragma once
-// A temperature module on Modbus TCP: all channels of a ChannelRegisterMap
-// read in as few requests as the map allows (contiguous registers of one kind
-// share a request of ≤ 125), decoded into one reading. Like ModbusTcpLink it
-// belongs to the thread that created it.
+// A temperature module on Modbus TCP or RTU: all channels of a
+// ChannelRegisterMap read in as few requests as the map allows (contiguous
+// registers of one kind share a request of ≤ 125), decoded into one reading.
+// Like ModbusLink it belongs to the thread that created it.
 
 #include <QDateTime>
 #include <QString>
@@ -11,10 +11,11 @@
 #include <vector>
 
 #include "acquisition/devices/ChannelRegisterMap.h"
+#include "acquisition/devices/PolledDevice.h"
 #include "acquisition/modbus/ModbusUrl.h"
 
 namespace driftlab::modbus {
-class ModbusTcpLink;
+class ModbusLink;
 }
 
 namespace driftlab::devices {
@@ -43,22 +44,24 @@ struct ReadBlock {
 /// unmapped registers is an exception on many modules.
 std::vector<ReadBlock> planReads(const ChannelRegisterMap& map, int max_registers = 125);
 
-class TemperatureModule {
+class TemperatureModule : public PolledDevice {
 public:
     TemperatureModule(ChannelRegisterMap map, modbus::ModbusUrl url,
                       double response_timeout_s = 1.0);
-    ~TemperatureModule();
+    ~TemperatureModule() override;
     TemperatureModule(const TemperatureModule&) = delete;
     TemperatureModule& operator=(const TemperatureModule&) = delete;
 
-    bool connect(QString* error);
-    void close();
+    bool connect(QString* error) override;
+    void close() override;
     bool isConnected() const;
 
     /// Every channel, or nullopt with `error` when the link failed (the link
     /// is then closed). A Modbus exception on one block only marks its
     /// channels NotRead, with the reason in the reading's warning.
     std::optional<TemperatureReading> read(QString* error);
+    /// read() for DeviceWorker: the reading in a QVariant.
+    std::optional<PolledReading> poll(QString* error) override;
 
     const ChannelRegisterMap& map() const { return m_map; }
     const std::vector<ReadBlock>& plan() const { return m_plan; }
@@ -68,9 +71,11 @@ public:
 private:
     ChannelRegisterMap m_map;
     std::vector<ReadBlock> m_plan;
-    std::unique_ptr<modbus::ModbusTcpLink> m_link;
+    std::unique_ptr<modbus::ModbusLink> m_link;
 };
 
 QString toString(ChannelStatus status);
 
 }  // namespace driftlab::devices
+
+Q_DECLARE_METATYPE(driftlab::devices::TemperatureReading)

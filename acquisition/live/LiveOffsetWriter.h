@@ -9,7 +9,7 @@
 #include <QString>
 #include <optional>
 
-#include "acquisition/modbus/ModbusTcpLink.h"
+#include "acquisition/modbus/ModbusLink.h"
 #include "core/domain/MachineState.h"
 
 namespace driftlab::live {
@@ -32,7 +32,7 @@ public:
     const modbus::ModbusUrl& url() const { return link_.url(); }
 
 private:
-    modbus::ModbusTcpLink link_;
+    modbus::ModbusLink link_;
     int staleAfter_s_;
     std::uint16_t sequence_ = 0;
 };

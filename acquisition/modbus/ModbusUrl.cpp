@@ -1,27 +1,19 @@
 #include "acquisition/modbus/ModbusUrl.h"
 
+#include <QSet>
 #include <QUrl>
 
 namespace driftlab::modbus {
+namespace {
 
-QString ModbusUrl::toString() const {
-    QString text = QStringLiteral("modbus://%1").arg(endpoint());
-    if (unit != 1) text += QStringLiteral("/%1").arg(unit);
-    return text;
-}
+const QLatin1String kTcpScheme("modbus://");
+const QLatin1String kRtuScheme("modbus-rtu://");
 
-QString ModbusUrl::endpoint() const {
-    // An IPv6 literal needs its brackets back to be read as host:port.
-    const QString shown = host.contains(QLatin1Char(':')) ? QStringLiteral("[%1]").arg(host) : host;
-    return QStringLiteral("%1:%2").arg(shown).arg(port);
-}
-
-std::optional<ModbusUrl> parseModbusUrl(const QString& text, QString* error) {
+std::optional<ModbusUrl> parseTcp(const QString& text, QString* error) {
     const auto fail = [&](const QString& why) {
         *error = QStringLiteral("'%1': %2 (expected modbus://HOST:PORT[/UNIT])").arg(text, why);
         return std::nullopt;
     };
-    if (!text.startsWith(QLatin1String("modbus://"))) return fail(QStringLiteral("not modbus://"));
     const QUrl url(text, QUrl::StrictMode);
     if (!url.isValid()) return fail(url.errorString());
     if (url.host().isEmpty()) return fail(QStringLiteral("no host"));
@@ -42,6 +34,114 @@ std::optional<ModbusUrl> parseModbusUrl(const QString& text, QString* error) {
             return fail(QStringLiteral("unit '%1' is not a number from 0 to 247").arg(path.mid(1)));
     }
     return result;
+}
+
+std::optional<ModbusUrl> parseRtu(const QString& text, QString* error) {
+    const auto fail = [&](const QString& why) {
+        *error = QStringLiteral(
+                     "'%1': %2 (expected modbus-rtu:///dev/DEVICE"
+                     "[?baud=19200&parity=E&data=8&stop=1&unit=1])")
+                     .arg(text, why);
+        return std::nullopt;
+    };
+    const QString rest = text.mid(kRtuScheme.size());
+    const QString device = rest.section(QLatin1Char('?'), 0, 0);
+    if (device.isEmpty()) return fail(QStringLiteral("no serial device"));
+    if (!device.startsWith(QLatin1Char('/')))
+        return fail(QStringLiteral("device '%1' is not an absolute path "
+                                   "(three slashes: modbus-rtu:///dev/ttyUSB0)")
+                        .arg(device));
+    SerialLine line;
+    line.device = device;
+    int unit = 1;
+    QSet<QString> seen;
+    const QString query = rest.section(QLatin1Char('?'), 1);
+    for (const QString& item : query.split(QLatin1Char('&'), Qt::SkipEmptyParts)) {
+        const QString key = item.section(QLatin1Char('='), 0, 0);
+        const QString value = item.section(QLatin1Char('='), 1);
+        if (!item.contains(QLatin1Char('=')) || value.isEmpty())
+            return fail(QStringLiteral("'%1' has no value").arg(key));
+        if (seen.contains(key)) return fail(QStringLiteral("'%1' given twice").arg(key));
+        seen.insert(key);
+        bool ok = false;
+        const int number = value.toInt(&ok);
+        const auto bad = [&](const QString& allowed) {
+            return fail(QStringLiteral("%1 '%2' is not %3").arg(key, value, allowed));
+        };
+        if (key == QLatin1String("baud")) {
+            if (!ok || number < 300 || number > 4'000'000)
+                return bad(QStringLiteral("300…4000000"));
+            line.baud = number;
+        } else if (key == QLatin1String("parity")) {
+            const QString p = value.toUpper();
+            if (p != QLatin1String("N") && p != QLatin1String("E") && p != QLatin1String("O"))
+                return bad(QStringLiteral("N, E or O"));
+            line.parity = p.at(0).toLatin1();
+        } else if (key == QLatin1String("data")) {
+            // RTU frames are 8-bit binary; 7 data bits is Modbus ASCII.
+            if (!ok || number != 8) return bad(QStringLiteral("8 (RTU frames carry 8 data bits)"));
+            line.data_bits = number;
+        } else if (key == QLatin1String("stop")) {
+            if (!ok || (number != 1 && number != 2)) return bad(QStringLiteral("1 or 2"));
+            line.stop_bits = number;
+        } else if (key == QLatin1String("unit")) {
+            // 0 is the broadcast address on a serial line: nothing answers it.
+            if (!ok || number < 1 || number > 247) return bad(QStringLiteral("1…247"));
+            unit = number;
+        } else {
+            return fail(
+                QStringLiteral("unknown setting '%1' (baud, parity, data, stop, unit)").arg(key));
+        }
+    }
+    return ModbusUrl::rtu(line, unit);
+}
+
+}  // namespace
+
+ModbusUrl ModbusUrl::rtu(SerialLine line, int unit) {
+    ModbusUrl url;
+    url.transport = Transport::Rtu;
+    url.serial = std::move(line);
+    url.unit = unit;
+    return url;
+}
+
+QString ModbusUrl::toString() const {
+    if (isRtu())
+        return QStringLiteral("modbus-rtu://%1?baud=%2&parity=%3&data=%4&stop=%5&unit=%6")
+            .arg(serial.device)
+            .arg(serial.baud)
+            .arg(QLatin1Char(serial.parity))
+            .arg(serial.data_bits)
+            .arg(serial.stop_bits)
+            .arg(unit);
+    QString text = QStringLiteral("modbus://%1").arg(endpoint());
+    if (unit != 1) text += QStringLiteral("/%1").arg(unit);
+    return text;
+}
+
+QString ModbusUrl::endpoint() const {
+    if (isRtu())
+        return QStringLiteral("%1 %2 %3%4%5 unit %6")
+            .arg(serial.device)
+            .arg(serial.baud)
+            .arg(serial.data_bits)
+            .arg(QLatin1Char(serial.parity))
+            .arg(serial.stop_bits)
+            .arg(unit);
+    // An IPv6 literal needs its brackets back to be read as host:port.
+    const QString shown = host.contains(QLatin1Char(':')) ? QStringLiteral("[%1]").arg(host) : host;
+    return QStringLiteral("%1:%2").arg(shown).arg(port);
+}
+
+std::optional<ModbusUrl> parseModbusUrl(const QString& text, QString* error) {
+    if (text.startsWith(kTcpScheme)) return parseTcp(text, error);
+    if (text.startsWith(kRtuScheme)) return parseRtu(text, error);
+    *error = QStringLiteral(
+                 "'%1': neither modbus://HOST:PORT[/UNIT] (TCP) nor "
+                 "modbus-rtu:///dev/DEVICE?… (RTU)")
+                 .arg(text);
+    return std::nullopt;
 }
 
 }  // namespace driftlab::modbus

@@ -24,6 +24,12 @@ inline constexpr int kActiveVersion = 4;
 inline constexpr int kCommitStatus = 5;
 inline constexpr int kAckVersion = 6;
 inline constexpr int kPreviousVersion = 7;
+/// The axis state the controller reports (AxisStateRegisters.h): a flag, then
+/// position (int32, 2), feed (int32, 2), torque (int16).
+inline constexpr int kAxisReport = 8;
+inline constexpr int kAxisPosition = 9;
+inline constexpr int kAxisFeed = 11;
+inline constexpr int kAxisTorque = 13;
 inline constexpr int kIdentityCount = 16;
 /// Block 1: the staged table, written by DriftLab; block 2: the active table.
 inline constexpr int kStagedHeader = 100;

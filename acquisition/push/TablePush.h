@@ -14,7 +14,7 @@
 #include <atomic>
 #include <functional>
 
-#include "acquisition/modbus/ModbusTcpLink.h"
+#include "acquisition/modbus/ModbusLink.h"
 #include "acquisition/push/CompensationRegisterMap.h"
 #include "acquisition/push/PushResult.h"
 #include "core/compensation/CompensationTable.h"
@@ -75,7 +75,7 @@ private:
     bool waitForStatus(CommitStatus wanted, double timeout_s);
     bool previousIntact();
 
-    modbus::ModbusTcpLink m_link;
+    modbus::ModbusLink m_link;
     PushOptions m_options;
     PushResult m_result;
     Identity m_identity;

@@ -12,6 +12,7 @@ ControllerRegisters::ControllerRegisters(std::uint16_t* registers, int capacity,
     m_regs[reg::kMagic] = kMagicValue;
     m_regs[reg::kMapVersion] = kMapVersionValue;
     m_regs[reg::kCapacity] = std::uint16_t(capacity);
+    m_regs[reg::kAxisReport] = 1;
     setMachineState(state);
 }
 
@@ -67,6 +68,11 @@ void ControllerRegisters::scan() {
 
 void ControllerRegisters::setMachineState(MachineState state) {
     m_regs[reg::kMachineState] = std::uint16_t(state);
+}
+
+void ControllerRegisters::setAxisState(const devices::AxisState& state) {
+    const devices::AxisStateWords words = devices::encodeAxisState(state);
+    std::copy(words.begin(), words.end(), m_regs + reg::kAxisPosition);
 }
 
 TableImage ControllerRegisters::active() const {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "acquisition/devices/AxisStateRegisters.h"
 #include "acquisition/push/CompensationRegisterMap.h"
 
 namespace driftlab::push {
@@ -50,6 +51,8 @@ public:
     void scan();
 
     void setMachineState(MachineState state);
+    /// Registers 9…13; the simulated controller always reports (register 8 is 1).
+    void setAxisState(const devices::AxisState& state);
     void setFaults(ControllerFaults faults);
     int writeRequests() const { return m_writes; }
     int applied() const { return m_applied; }

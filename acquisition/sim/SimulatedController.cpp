@@ -61,6 +61,7 @@ bool SimulatedController::start(QString* error) {
     m_port = ntohs(bound.sin_port);
     m_registers = std::make_unique<ControllerRegisters>(
         m_mapping->tab_registers, m_options.capacity, m_options.state, m_options.faults);
+    m_registers->setAxisState(m_options.axis);
     m_stop = false;
     m_thread = std::thread([this] { serve(); });
     return true;
@@ -144,6 +145,12 @@ void SimulatedController::handle(int socket, std::vector<int>& clients) {
 void SimulatedController::setMachineState(MachineState state) {
     std::lock_guard lock(m_mutex);
     if (m_registers) m_registers->setMachineState(state);
+}
+
+void SimulatedController::setAxisState(const devices::AxisState& state) {
+    std::lock_guard lock(m_mutex);
+    m_options.axis = state;  // kept for a start() still to come
+    if (m_registers) m_registers->setAxisState(state);
 }
 
 void SimulatedController::setFaults(const ControllerFaults& faults) {

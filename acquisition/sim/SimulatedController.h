@@ -24,6 +24,7 @@ struct SimulatedControllerOptions {
     int port = 0;  ///< 0: a free port chosen by the system (see port())
     int capacity = kMaxCapacity;
     MachineState state = MachineState::Idle;
+    devices::AxisState axis;  ///< served until setAxisState()
     ControllerFaults faults;
 };
 
@@ -46,6 +47,10 @@ public:
 
     // Thread-safe views and controls for tests and the CLI.
     void setMachineState(MachineState state);
+    /// The axis state the controller reports (registers 9…13); the simulated
+    /// rig drives it. Encoded as docs/modbus-register-map.md says (0.1 µm,
+    /// 0.1 mm/min, 0.01 N·m), saturating at the registers' limits.
+    void setAxisState(const devices::AxisState& state);
     /// Replaces the injected faults (a drop counts from now).
     void setFaults(const ControllerFaults& faults);
     TableImage activeTable() const;

@@ -97,7 +97,7 @@ const std::vector<Command>& commands() {
          QStringLiteral("The compensation push history of a store: when, which table, which "
                         "controller, what happened.")},
         {QStringLiteral("controller-sim"), controllerSimCommand,
-         QStringLiteral("controller-sim [--port N] [--state S] [--fault F]..."),
+         QStringLiteral("controller-sim [--port N] [--state S] [--axis P,F,T] [--fault F]..."),
          QStringLiteral("Serve the simulated controller of DriftLab's Modbus register map until "
                         "Ctrl-C (for trying the push and the map).")},
         {QStringLiteral("live"), liveCommand,

@@ -2,6 +2,7 @@
 // served in the foreground until SIGINT/SIGTERM; pushes: the push history of a
 // store (docs/compensation.md, "Push to a controller").
 #include <QJsonArray>
+#include <array>
 #include <csignal>
 #include <cstdio>
 
@@ -44,6 +45,20 @@ void addFault(push::ControllerFaults& faults, const QString& fault) {
                        2);
 }
 
+/// --axis POSITION_MM,FEED_MM_MIN,TORQUE_NM: the axis state served in block 0.
+devices::AxisState axisState(const QString& text) {
+    const QStringList parts = text.split(QLatin1Char(','));
+    std::array<double, 3> values{};
+    bool ok = parts.size() == 3;
+    for (int i = 0; ok && i < 3; ++i) values[std::size_t(i)] = parts[i].toDouble(&ok);
+    if (!ok)
+        throw CliError(QStringLiteral("--axis: '%1' is not POSITION_MM,FEED_MM_MIN,TORQUE_NM "
+                                      "(three numbers)")
+                           .arg(text),
+                       2);
+    return {values[0], values[1], values[2]};
+}
+
 }  // namespace
 
 int controllerSimCommand(const QStringList& args) {
@@ -67,7 +82,12 @@ int controllerSimCommand(const QStringList& args) {
         QStringLiteral("Inject a fault (repeatable): drop-after-writes=N, refuse-commit, "
                        "corrupt-after-apply, idle-after-polls=N (a cut that ends)."),
         QStringLiteral("F")};
-    parseArguments(parser, args, {host, port, capacity, state, fault});
+    const QCommandLineOption axis{
+        QStringLiteral("axis"),
+        QStringLiteral("Axis state served in registers 8-13: position mm, feed mm/min, "
+                       "torque N·m (default 0,0,0)."),
+        QStringLiteral("P,F,T"), QStringLiteral("0,0,0")};
+    parseArguments(parser, args, {host, port, capacity, state, fault, axis});
     push::SimulatedControllerOptions options;
     options.host = parser.value(host);
     bool ok = false;
@@ -77,6 +97,7 @@ int controllerSimCommand(const QStringList& args) {
     options.capacity = parser.value(capacity).toInt(&ok);
     if (!ok) throw CliError(QStringLiteral("--capacity: not a whole number"), 2);
     options.state = machineState(parser.value(state));
+    options.axis = axisState(parser.value(axis));
     for (const QString& f : parser.values(fault)) addFault(options.faults, f);
 
     // Block the stop signals before the server thread starts (it inherits the

@@ -10,7 +10,7 @@
 #include <unistd.h>
 #include <QSignalSpy>
 
-#include "acquisition/devices/DeviceWorker.h"
+#include "acquisition/devices/TemperatureDevice.h"
 #include "tests/acquisition/DevicePeer.h"
 
 using namespace driftlab;

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <memory>
 
-#include "acquisition/modbus/ModbusTcpLink.h"
+#include "acquisition/modbus/ModbusLink.h"
 #include "acquisition/push/TablePush.h"
 #include "acquisition/sim/SimulatedController.h"
 
@@ -55,7 +55,7 @@ inline push::PushOptions testOptions(double ack_timeout_s = 5) {
 /// The active table (block 2) read over Modbus TCP by a client of its own.
 inline push::TableImage readActiveOverModbus(const push::SimulatedController& controller,
                                              int capacity = push::kMaxCapacity) {
-    modbus::ModbusTcpLink link(urlOf(controller));
+    modbus::ModbusLink link(urlOf(controller));
     QString error;
     push::TableImage image;
     std::vector<std::uint16_t> header, plus, minus;

@@ -5,14 +5,18 @@ python3-pymodbus (3.0), not against DriftLab's C++: the push test talks to it
 to show that the map, not one implementation, is what DriftLab speaks.
 
     /usr/bin/python3 pymodbus_controller.py [--port N] [--capacity N]
+        [--position-mm X] [--feed-mm-min F] [--torque-nm T] [--state S]
 
-Prints the TCP port it listens on (127.0.0.1) as its first line, then serves
+Serves the axis state given (registers 8-13: report flag, position int32 in
+0.1 um, feed int32 in 0.1 mm/min, torque int16 in 0.01 N m, each rounded half
+away from zero; machine state in register 2). Prints the TCP port it listens on (127.0.0.1) as its first line, then serves
 until killed. The checksum is pymodbus's own CRC (pymodbus.utilities.computeCRC),
 which returns the CRC byte-swapped for RTU frames; the map holds it unswapped.
 """
 import argparse
 import asyncio
 import struct
+from decimal import ROUND_HALF_UP, Decimal
 
 from pymodbus.datastore import ModbusSequentialDataBlock, ModbusSlaveContext
 from pymodbus.utilities import computeCRC
@@ -21,11 +25,26 @@ from pymodbus_serve import serve_on_loopback
 
 MAGIC, MAP_VERSION = 0x4446, 1
 MACHINE_STATE, CAPACITY, ACTIVE_VERSION, COMMIT_STATUS, ACK_VERSION, PREVIOUS_VERSION = 2, 3, 4, 5, 6, 7
+AXIS_REPORT, POSITION, FEED, TORQUE = 8, 9, 11, 13
+STATES = {"idle": 0, "moving": 1, "cutting": 2, "tool-change": 3}
 STAGED, COMMAND, STAGED_DATA, ACTIVE, ACTIVE_DATA = 100, 108, 200, 1000, 1100
 HEADER = 8
 CUTTING = 2
 STAGED_OK, APPLIED, REFUSED, CHECKSUM_MISMATCH, ABORTED, ROLLED_BACK = 1, 2, 3, 4, 5, 6
 COMMIT, ABORT, ROLL_BACK = 1, 2, 3
+
+
+def counts(value, per_unit):
+    """value x per_unit rounded half away from zero (Python's round() is
+    half to even; the map says away from zero)."""
+    scaled = Decimal(repr(value)) * per_unit
+    return int(scaled.to_integral_value(rounding=ROUND_HALF_UP))
+
+
+def axis_registers(position_mm, feed_mm_min, torque_nm):
+    """Registers 9-13, packed by struct: big-endian int32 = high word first."""
+    return list(struct.unpack(">HHHHH", struct.pack(
+        ">iih", counts(position_mm, 10000), counts(feed_mm_min, 10), counts(torque_nm, 100))))
 
 
 def crc16_modbus(registers):
@@ -36,9 +55,12 @@ def crc16_modbus(registers):
 class ControllerMap(ModbusSequentialDataBlock):
     """Holding registers 0..2005 that act on the command register when written."""
 
-    def __init__(self, capacity):
+    def __init__(self, capacity, axis=(0.0, 0.0, 0.0), state="idle"):
         super().__init__(0, [0] * 2006)
         self.capacity = capacity
+        self.values[AXIS_REPORT] = 1
+        self.values[POSITION:TORQUE + 1] = axis_registers(*axis)
+        self.values[MACHINE_STATE] = STATES[state]
         self.pending = False
         self.previous = None  # (header, data) of the table before the active one
         self.values[0], self.values[1], self.values[CAPACITY] = MAGIC, MAP_VERSION, capacity
@@ -109,16 +131,22 @@ class ControllerMap(ModbusSequentialDataBlock):
         self.answer(ROLLED_BACK, undone)
 
 
-async def serve(port, capacity):
-    await serve_on_loopback(ModbusSlaveContext(hr=ControllerMap(capacity), zero_mode=True), port)
+async def serve(port, block):
+    await serve_on_loopback(ModbusSlaveContext(hr=block, zero_mode=True), port)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--port", type=int, default=0, help="TCP port (0: a free one)")
     parser.add_argument("--capacity", type=int, default=256)
+    parser.add_argument("--position-mm", type=float, default=0.0)
+    parser.add_argument("--feed-mm-min", type=float, default=0.0)
+    parser.add_argument("--torque-nm", type=float, default=0.0)
+    parser.add_argument("--state", choices=sorted(STATES), default="idle")
     args = parser.parse_args()
-    asyncio.run(serve(args.port, args.capacity))
+    block = ControllerMap(args.capacity, (args.position_mm, args.feed_mm_min, args.torque_nm),
+                          args.state)
+    asyncio.run(serve(args.port, block))
 
 
 if __name__ == "__main__":

@@ -1,9 +1,10 @@
 #pragma once
-// One Modbus TCP client connection (libmodbus context): connect with a
-// timeout, read and write holding registers in requests within the protocol's
-// limits, errors that name the device, the registers and the system's reason.
-// A context belongs to one thread (DESIGN.md section 1): create the link on
-// the thread that uses it.
+// One Modbus client link (a libmodbus context), over TCP or RTU as its URL
+// says: connect with a timeout, read and write registers in requests within
+// the protocol's limits, errors that name the device, the registers and the
+// system's reason. The transport differs only in how the context is opened;
+// every request goes through the same code. A context belongs to one thread
+// (DESIGN.md section 1): create the link on the thread that uses it.
 
 #include <QString>
 #include <cstdint>
@@ -20,21 +21,24 @@ namespace driftlab::modbus {
 inline constexpr int kMaxReadRegisters = 125;
 inline constexpr int kMaxWriteRegisters = 123;
 
-class ModbusTcpLink {
+class ModbusLink {
 public:
-    /// `response_timeout_s` bounds the connect and every request.
-    explicit ModbusTcpLink(ModbusUrl url, double response_timeout_s = 1.0);
-    ~ModbusTcpLink();
-    ModbusTcpLink(const ModbusTcpLink&) = delete;
-    ModbusTcpLink& operator=(const ModbusTcpLink&) = delete;
+    /// `response_timeout_s` bounds the TCP connect and every request.
+    explicit ModbusLink(ModbusUrl url, double response_timeout_s = 1.0);
+    ~ModbusLink();
+    ModbusLink(const ModbusLink&) = delete;
+    ModbusLink& operator=(const ModbusLink&) = delete;
 
-    /// Connects (again, after close() or a lost connection). False with `error`.
+    /// Connects (again, after close() or a lost connection): a TCP connect, or
+    /// opening and configuring the serial device (stale bytes flushed).
+    /// False with `error`.
     bool connect(QString* error);
     void close();
     bool isConnected() const { return m_connected; }
 
     /// Holding registers [address, address + count) into `out`, in requests of
-    /// ≤ 125. False with `error`; a transport error also closes the link.
+    /// ≤ 125. False with `error`; anything but a Modbus exception (reset,
+    /// timeout, a bad CRC, a response out of step) also closes the link.
     bool readRegisters(int address, int count, std::vector<std::uint16_t>& out, QString* error);
     /// Input registers (function 4), as readRegisters: many I/O modules keep
     /// their measurements there rather than in holding registers.
@@ -53,6 +57,7 @@ private:
     /// The message for a failed request (errno `code`); closes the link
     /// unless the device answered with a Modbus exception.
     QString failure(int code, const QString& what, int address, int count);
+    bool openContext(QString* error);
     bool read(bool input, int address, int count, std::vector<std::uint16_t>& out, QString* error);
 
     ModbusUrl m_url;

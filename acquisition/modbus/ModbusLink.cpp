@@ -1,6 +1,8 @@
-#include "acquisition/modbus/ModbusTcpLink.h"
+#include "acquisition/modbus/ModbusLink.h"
 
 #include <modbus.h>
+
+#include <QFile>
 
 #include <algorithm>
 #include <cerrno>
@@ -17,14 +19,14 @@ void splitSeconds(double seconds, std::uint32_t* whole, std::uint32_t* micro) {
 
 }  // namespace
 
-ModbusTcpLink::ModbusTcpLink(ModbusUrl url, double response_timeout_s)
+ModbusLink::ModbusLink(ModbusUrl url, double response_timeout_s)
     : m_url(std::move(url)), m_timeout_s(response_timeout_s) {}
 
-ModbusTcpLink::~ModbusTcpLink() {
+ModbusLink::~ModbusLink() {
     close();
 }
 
-void ModbusTcpLink::close() {
+void ModbusLink::close() {
     if (!m_context) return;
     modbus_close(m_context);
     modbus_free(m_context);
@@ -32,56 +34,73 @@ void ModbusTcpLink::close() {
     m_connected = false;
 }
 
-bool ModbusTcpLink::connect(QString* error) {
-    close();
-    // The _pi variant resolves host names as well as IPv4/IPv6 literals.
-    const QByteArray host = m_url.host.toUtf8();
-    const QByteArray service = QByteArray::number(m_url.port);
-    m_context = modbus_new_tcp_pi(host.constData(), service.constData());
-    if (!m_context) {
-        *error = QStringLiteral("%1: cannot create a Modbus context: %2")
-                     .arg(m_url.endpoint(), QString::fromLocal8Bit(modbus_strerror(errno)));
-        return false;
+bool ModbusLink::openContext(QString* error) {
+    if (m_url.isRtu()) {
+        const SerialLine& line = m_url.serial;
+        const QByteArray device = QFile::encodeName(line.device);
+        m_context = modbus_new_rtu(device.constData(), line.baud, line.parity, line.data_bits,
+                                   line.stop_bits);
+    } else {
+        // The _pi variant resolves host names as well as IPv4/IPv6 literals.
+        const QByteArray host = m_url.host.toUtf8();
+        const QByteArray service = QByteArray::number(m_url.port);
+        m_context = modbus_new_tcp_pi(host.constData(), service.constData());
     }
+    if (m_context) return true;
+    *error = QStringLiteral("%1: cannot create a Modbus context: %2")
+                 .arg(m_url.endpoint(), QString::fromLocal8Bit(modbus_strerror(errno)));
+    return false;
+}
+
+bool ModbusLink::connect(QString* error) {
+    close();
+    if (!openContext(error)) return false;
     std::uint32_t seconds = 0, micro = 0;
     splitSeconds(m_timeout_s, &seconds, &micro);
     // libmodbus bounds the TCP connect by the response timeout too.
     modbus_set_response_timeout(m_context, seconds, micro);
     modbus_set_slave(m_context, m_url.unit);
     if (modbus_connect(m_context) == -1) {
-        *error = QStringLiteral("%1: cannot connect: %2")
-                     .arg(m_url.endpoint(), QString::fromLocal8Bit(modbus_strerror(errno)));
+        *error = QStringLiteral("%1: cannot %2: %3")
+                     .arg(m_url.endpoint(),
+                          m_url.isRtu() ? QStringLiteral("open the serial device")
+                                        : QStringLiteral("connect"),
+                          QString::fromLocal8Bit(modbus_strerror(errno)));
         close();
         return false;
     }
+    // RTU has no transaction ids: a late answer to a request of the previous
+    // connection would pass for the answer to the next one.
+    if (m_url.isRtu()) modbus_flush(m_context);
     m_connected = true;
     return true;
 }
 
-QString ModbusTcpLink::failure(int code, const QString& what, int address, int count) {
+QString ModbusLink::failure(int code, const QString& what, int address, int count) {
     const QString text = QStringLiteral("%1: %2 registers %3–%4: %5")
                              .arg(m_url.endpoint(), what)
                              .arg(address)
                              .arg(address + count - 1)
                              .arg(QString::fromLocal8Bit(modbus_strerror(code)));
-    // A Modbus exception is an answer; anything else (reset, timeout, a
-    // response out of step) leaves the stream unusable until reconnected.
-    if (code < MODBUS_ENOBASE) close();
+    // A Modbus exception is an answer; anything else (reset, timeout, a bad
+    // CRC, a response out of step) leaves the stream unusable until reconnected.
+    const bool exception = code >= EMBXILFUN && code <= EMBXGTAR;
+    if (!exception) close();
     return text;
 }
 
-bool ModbusTcpLink::readRegisters(int address, int count, std::vector<std::uint16_t>& out,
-                                  QString* error) {
+bool ModbusLink::readRegisters(int address, int count, std::vector<std::uint16_t>& out,
+                               QString* error) {
     return read(false, address, count, out, error);
 }
 
-bool ModbusTcpLink::readInputRegisters(int address, int count, std::vector<std::uint16_t>& out,
-                                       QString* error) {
+bool ModbusLink::readInputRegisters(int address, int count, std::vector<std::uint16_t>& out,
+                                    QString* error) {
     return read(true, address, count, out, error);
 }
 
-bool ModbusTcpLink::read(bool input, int address, int count, std::vector<std::uint16_t>& out,
-                         QString* error) {
+bool ModbusLink::read(bool input, int address, int count, std::vector<std::uint16_t>& out,
+                      QString* error) {
     out.assign(std::size_t(std::max(count, 0)), 0);
     if (!m_connected) {
         *error = QStringLiteral("%1: not connected").arg(m_url.endpoint());
@@ -105,8 +124,8 @@ bool ModbusTcpLink::read(bool input, int address, int count, std::vector<std::ui
     return true;
 }
 
-bool ModbusTcpLink::writeRegisters(int address, std::span<const std::uint16_t> values,
-                                   QString* error) {
+bool ModbusLink::writeRegisters(int address, std::span<const std::uint16_t> values,
+                                QString* error) {
     if (!m_connected) {
         *error = QStringLiteral("%1: not connected").arg(m_url.endpoint());
         return false;
