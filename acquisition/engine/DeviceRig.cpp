@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "acquisition/devices/DeviceWorker.h"
+#include "acquisition/devices/TemperatureDevice.h"
 
 namespace driftlab::engine {
 namespace {

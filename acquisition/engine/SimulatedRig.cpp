@@ -75,6 +75,11 @@ std::unique_ptr<RunSource> SimulatedRig::open(const procedures::PlannedRun& run,
             spec.run_id = run.id;
             spec.seed = seed;
             spec.sample_interval_s = m_spec.sample_interval_s;
+            // The room of the rig: a machine at rest drifts with it (ETVE).
+            if (run.kind == RunKind::Etve && spec.ambient_swing_K == 0) {
+                spec.ambient_swing_K = m_spec.environment.ambient_swing_K;
+                spec.ambient_period_s = m_spec.environment.ambient_period_s;
+            }
             return std::make_unique<PlaybackRunSource>(rig::simulateSpindleTest(spec, columns));
         }
         return std::make_unique<AxisRunSource>(m_spec, columns, run.programme, pitchPhase_rad,
