@@ -25,8 +25,13 @@ QJsonObject importFigures(int megabytes, int repetitions);
 QJsonObject pushFigures(int pushes);
 QJsonObject loggingFigures(int repetitions);
 void printLoggingLine(const QJsonObject& figures);
+/// LiveReadLatency.cpp: device reading → reader of the live read path, µs.
+QJsonObject liveReadFigures(int readings);
 
 namespace {
+
+/// Readings the live-read latency figure is the median and p99 of.
+constexpr int kLiveReadings = 25000;
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -113,6 +118,14 @@ QJsonObject scipyFigures() {
     return {};
 }
 
+void printLiveReadLine(const QJsonObject& live) {
+    printLine(QStringLiteral("live read       device reading → waiting reader of the live buffer, "
+                             "%1 readings in bursts: median %2 µs, p99 %3 µs")
+                  .arg(live[QStringLiteral("live_read_readings")].toInt())
+                  .arg(live[QStringLiteral("live_read_latency_median_us")].toDouble(), 0, 'f', 1)
+                  .arg(live[QStringLiteral("live_read_latency_p99_us")].toDouble(), 0, 'f', 1));
+}
+
 void printPushLine(const QJsonObject& push) {
     printLine(QStringLiteral("push            256-point table to the simulated controller over "
                              "Modbus TCP, %1 pushes: median %2 ms, worst %3 ms")
@@ -139,7 +152,8 @@ int benchCommand(const QStringList& args) {
         QStringLiteral("Pushes of a 256-point table to the simulated controller (0: skip)."),
         QStringLiteral("N"), QStringLiteral("50")};
     const QCommandLineOption only{
-        QStringLiteral("only"), QStringLiteral("Measure only this figure: push, online, logging."),
+        QStringLiteral("only"),
+        QStringLiteral("Measure only this figure: push, online, logging, live-read."),
         QStringLiteral("FIGURE")};
     parseArguments(parser, args, {repeat, noPython, importMb, pushes, only});
     const int pushCount = parser.value(pushes).toInt();
@@ -177,9 +191,18 @@ int benchCommand(const QStringList& args) {
                           .arg(us.size()));
         return 0;
     }
+    if (parser.value(only) == QLatin1String("live-read")) {
+        const QJsonObject figures = liveReadFigures(kLiveReadings);
+        endProgressLine();
+        if (parser.isSet(QStringLiteral("json")))
+            printJson(figures);
+        else
+            printLiveReadLine(figures);
+        return 0;
+    }
     if (parser.isSet(only))
         throw CliError(QStringLiteral("--only: '%1' is not a figure it can measure alone (push, "
-                                      "online, logging)")
+                                      "online, logging, live-read)")
                            .arg(parser.value(only)),
                        2);
     const int repetitions = std::max(1, parser.value(repeat).toInt());
@@ -203,6 +226,8 @@ int benchCommand(const QStringList& args) {
     const QJsonObject logging = loggingFigures(std::min(repetitions, 3));
     for (auto it = logging.begin(); it != logging.end(); ++it) figures[it.key()] = it.value();
     for (auto it = push.begin(); it != push.end(); ++it) figures[it.key()] = it.value();
+    const QJsonObject liveRead = liveReadFigures(kLiveReadings);
+    for (auto it = liveRead.begin(); it != liveRead.end(); ++it) figures[it.key()] = it.value();
     if (!parser.isSet(noPython)) {
         printProgress(QStringLiteral("scipy comparison"), 0);
         const QJsonObject scipy = scipyFigures();
@@ -251,6 +276,7 @@ int benchCommand(const QStringList& args) {
                 .arg(import[QStringLiteral("import_peak_rss_mb")].toDouble(), 0, 'f', 0)
                 .arg(import[QStringLiteral("import_peak_memory_ratio")].toDouble(), 0, 'f', 2));
     if (!push.isEmpty()) printPushLine(push);
+    printLiveReadLine(liveRead);
     return 0;
 }
 

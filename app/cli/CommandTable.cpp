@@ -106,7 +106,7 @@ const std::vector<Command>& commands() {
                         "model fitted on the training runs updates the correction online, only "
                         "between cuts, and is scored on the run's measured thermal error.")},
         {QStringLiteral("health"), healthCommand,
-         QStringLiteral("health BUNDLE [--run R,..] [--redundant A=B]..."),
+         QStringLiteral("health BUNDLE [--run R,..] [--redundant A=B]... [--store]"),
          QStringLiteral("Sensor self-diagnosis of the logged samples: out of range (open, short), "
                         "frozen, spikes, rate of change, drift between redundant sensors; per "
                         "run and channel, how many samples and when.")},

@@ -7,6 +7,7 @@
 #include "app/cli/CliCommon.h"
 #include "app/cli/CommandTable.h"
 #include "app/cli/CompensationPush.h"
+#include "app/cli/FlaggedSamples.h"
 #include "app/cli/ThermalProfile.h"
 #include "core/compensation/CsvExport.h"
 #include "core/compensation/FanucExport.h"
@@ -121,7 +122,7 @@ int compensateCommand(const QStringList& args) {
                    campaignSourceOptions()
                        << format << out << runOption << spacing << points << start << end
                        << bidirectional << maxValue << maxStep << axis << magnification
-                       << thermalProfileOptions() << pushOptions(),
+                       << thermalProfileOptions() << keepFlaggedOption() << pushOptions(),
                    campaignSourceArguments());
 
     // A file, a push, or both; the push options are checked before any work.
@@ -164,8 +165,10 @@ int compensateCommand(const QStringList& args) {
                        2);
 
     // A push is recorded in the --db store: open it for writing from the start.
-    const Campaign campaign =
+    Campaign campaign =
         loadCampaignSource(parser, plan ? db::StoreAccess::ReadWrite : db::StoreAccess::ReadOnly);
+    // Only the model of the thermal profile reads sensor samples.
+    if (wantsThermalProfile(parser)) leaveOutFlaggedSamples(parser, campaign);
     const Run& run = choosePositioningRun(campaign, parser.value(runOption));
     QString source = QStringLiteral("run %1 of %2").arg(run.id, campaign.name);
     const iso::Evaluation evaluation = iso::evaluate(iso::readingsOf(run));

@@ -4,6 +4,7 @@
 #include <QJsonArray>
 
 #include "app/cli/CliCommon.h"
+#include "app/cli/FlaggedSamples.h"
 #include "core/diagnosis/Diagnosis.h"
 #include "db/DiagnosisStore.h"
 #include "ui/plots/DiagnosisPlots.h"
@@ -76,7 +77,8 @@ int diagnoseCommand(const QStringList& args) {
                                    QStringLiteral("Write the residual map and before/after "
                                                   "curves of each held-out run into DIR."),
                                    QStringLiteral("DIR")};
-    parseArguments(parser, args, campaignSourceOptions() << train << test << plots,
+    parseArguments(parser, args,
+                   campaignSourceOptions() << train << test << plots << keepFlaggedOption(),
                    campaignSourceArguments());
     if (parser.isSet(train) != parser.isSet(test))
         throw CliError(QStringLiteral("give both --train and --test, or neither"), 2);
@@ -85,7 +87,8 @@ int diagnoseCommand(const QStringList& args) {
     options.test_runs = runList(parser.value(test));
     // Refused before the campaign is read: it is the command line that is wrong.
     refuseOverlappingRuns(options.train_runs, options.test_runs);
-    const Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
+    Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
+    leaveOutFlaggedSamples(parser, campaign);
     options.progress = [](double f) { return printProgress(QStringLiteral("diagnosing"), f); };
     const diagnosis::DiagnosisResult r = diagnosis::diagnose(campaign, options);
     if (!r.ok()) throw CliError(r.error);

@@ -2,11 +2,15 @@
 // docs/sensor-health.md): per run and channel, what was found (out of range,
 // frozen, spikes, rate of change, redundant drift), how many samples and when.
 // Findings are results, not failures: the exit code is 0 either way and
-// `healthy` in the JSON says whether anything was found.
+// `healthy` in the JSON says whether anything was found. With --store the
+// findings of each checked run replace its flags in the --db store, where the
+// model commands leave flagged samples out (app/cli/FlaggedSamples.h).
 #include <QJsonArray>
+#include <cstdio>
 
 #include "app/cli/CliCommon.h"
-#include "core/sensors/SensorHealth.h"
+#include "core/sensors/SampleFlags.h"
+#include "db/SampleFlagStore.h"
 
 namespace driftlab::cli {
 namespace {
@@ -37,6 +41,22 @@ QJsonObject summaryJson(const sensors::ChannelHealthSummary& summary) {
             {QStringLiteral("findings"), findings}};
 }
 
+/// Replaces each checked run's flags in the --db store; says what it stored on stderr.
+void storeFound(const QCommandLineParser& parser,
+                const std::vector<std::pair<QString, std::vector<sensors::FlaggedRange>>>& found) {
+    auto store = openSourceStore(parser, db::StoreAccess::ReadWrite);
+    const qint64 campaignId = parser.value(QStringLiteral("campaign")).toLongLong();
+    QString error;
+    std::size_t ranges = 0;
+    for (const auto& [run, flags] : found) {
+        const auto runId = db::runDbId(*store, campaignId, run, &error);
+        if (!runId || !db::replaceRunFlags(*store, *runId, flags, &error)) throw CliError(error);
+        ranges += flags.size();
+    }
+    std::fprintf(stderr, "flags: %zu ranges stored for %zu runs in %s\n", ranges, found.size(),
+                 qPrintable(store->path()));
+}
+
 }  // namespace
 
 int healthCommand(const QStringList& args) {
@@ -49,11 +69,22 @@ int healthCommand(const QStringList& args) {
         QStringLiteral("Two temperature channels at the same place, A=B (repeatable): their "
                        "slow divergence is checked."),
         QStringLiteral("A=B")};
-    parseArguments(parser, args, campaignSourceOptions() << runs << redundant,
+    const QCommandLineOption store{
+        QStringLiteral("store"),
+        QStringLiteral("Store the findings as sensor flags of each checked run in the --db store "
+                       "(replacing its earlier ones); the model commands leave flagged samples "
+                       "out.")};
+    parseArguments(parser, args, campaignSourceOptions() << runs << redundant << store,
                    campaignSourceArguments());
     const auto pairs = redundantPairs(parser.values(redundant));
     const QStringList wanted = runList(parser.value(runs));
-    const Campaign campaign = loadCampaignSource(parser);
+    const bool storeFlags = parser.isSet(store);
+    if (storeFlags && !parser.isSet(QStringLiteral("db")))
+        throw CliError(QStringLiteral("--store writes into a store: give --db FILE --campaign ID"),
+                       2);
+    // Opened for writing from the start, so a store it cannot write is refused before the work.
+    const Campaign campaign = loadCampaignSource(
+        parser, storeFlags ? db::StoreAccess::ReadWrite : db::StoreAccess::ReadOnly);
     for (const QString& id : wanted) {
         if (std::none_of(campaign.runs.begin(), campaign.runs.end(),
                          [&](const Run& r) { return r.id == id; }))
@@ -61,6 +92,7 @@ int healthCommand(const QStringList& args) {
     }
     const sensors::SensorHealthSettings settings;
     bool healthy = true;
+    std::vector<std::pair<QString, std::vector<sensors::FlaggedRange>>> found;
     QJsonArray runsJson;
     QStringList lines;
     for (const Run& run : campaign.runs) {
@@ -88,9 +120,11 @@ int healthCommand(const QStringList& args) {
                          .arg(checked.size())
                          .arg(run.samples.rowCount());
         healthy &= findings == 0;
+        found.emplace_back(run.id, sensors::flaggedRanges(checked));
         runsJson.append(
             QJsonObject{{QStringLiteral("id"), run.id}, {QStringLiteral("channels"), channels}});
     }
+    if (storeFlags) storeFound(parser, found);
     if (parser.isSet(QStringLiteral("json"))) {
         printJson({{QStringLiteral("healthy"), healthy}, {QStringLiteral("runs"), runsJson}});
         return 0;

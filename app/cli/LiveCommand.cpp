@@ -11,6 +11,7 @@
 
 #include "acquisition/live/LiveOffsetWriter.h"
 #include "app/cli/CliCommon.h"
+#include "app/cli/FlaggedSamples.h"
 #include "core/compensation/LiveReplay.h"
 #include "core/models/HeatTransferModel.h"
 
@@ -91,8 +92,9 @@ int liveCommand(const QStringList& args) {
                        "possible)."),
         QStringLiteral("N")};
     parseArguments(parser, args,
-                   campaignSourceOptions() << runOption << train << interval << position << points
-                                           << maxChange << cutting << push << staleAfter << speedup,
+                   campaignSourceOptions()
+                       << runOption << train << interval << position << points << maxChange
+                       << cutting << push << staleAfter << speedup << keepFlaggedOption(),
                    campaignSourceArguments({runOption, train}));
     const QString runId = parser.value(runOption);
     const QStringList trainRuns = runList(parser.value(train));
@@ -106,7 +108,8 @@ int liveCommand(const QStringList& args) {
                            .arg(parser.value(points)),
                        2);
 
-    const Campaign campaign = loadCampaignSource(parser);
+    Campaign campaign = loadCampaignSource(parser);
+    leaveOutFlaggedSamples(parser, campaign);
     models::DatasetResult data = models::buildDataset(campaign, trainRuns + QStringList{runId});
     if (!data.ok()) throw CliError(data.error);
     const models::RunData replayed = data.runs.back();

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "app/cli/CliCommon.h"
+#include "app/cli/FlaggedSamples.h"
 #include "core/models/ModelFactory.h"
 #include "core/models/ModelScore.h"
 
@@ -55,7 +56,9 @@ int fitCommand(const QStringList& args) {
         QStringLiteral("Held-out test runs, none of them a training run (default: every other "
                        "run). With none, the score is a training score."),
         QStringLiteral("R,..")};
-    parseArguments(parser, args, campaignSourceOptions() << model << train << test << kTargetOption,
+    parseArguments(parser, args,
+                   campaignSourceOptions()
+                       << model << train << test << kTargetOption << keepFlaggedOption(),
                    campaignSourceArguments({model}));
     auto m = models::makeModel(parser.value(model));
     if (!m)
@@ -65,7 +68,8 @@ int fitCommand(const QStringList& args) {
     QStringList trainRuns = runList(parser.value(train));
     QStringList testRuns = runList(parser.value(test));
     refuseOverlappingRuns(trainRuns, testRuns);
-    const Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
+    Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
+    leaveOutFlaggedSamples(parser, campaign);
     const QString target = parser.value(kTargetOption);
     const QStringList all = modelledRuns(campaign, target);
     if (!parser.isSet(train))
@@ -154,9 +158,11 @@ int compareCommand(const QStringList& args) {
     const QCommandLineOption only{QStringLiteral("models"),
                                   QStringLiteral("Models to compare (default: all)."),
                                   QStringLiteral("NAME,..")};
-    parseArguments(parser, args, campaignSourceOptions() << only << kTargetOption,
+    parseArguments(parser, args,
+                   campaignSourceOptions() << only << kTargetOption << keepFlaggedOption(),
                    campaignSourceArguments());
-    const Campaign campaign = loadCampaignSource(parser);
+    Campaign campaign = loadCampaignSource(parser);
+    leaveOutFlaggedSamples(parser, campaign);
     const QString target = parser.value(kTargetOption);
     const QStringList runs = modelledRuns(campaign, target);
     const auto data = dataset(campaign, runs, target);

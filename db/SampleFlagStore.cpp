@@ -1,0 +1,142 @@
+#include "db/SampleFlagStore.h"
+
+#include <QSqlError>
+#include <QSqlQuery>
+#include <algorithm>
+#include <stdexcept>
+
+namespace driftlab::db {
+namespace {
+
+bool fail(QString* error, const CampaignStore& store, const QString& why) {
+    if (error) *error = QStringLiteral("%1: %2").arg(store.path(), why);
+    return false;
+}
+
+}  // namespace
+
+bool replaceRunFlags(CampaignStore& store, qint64 runDbId,
+                     const std::vector<sensors::FlaggedRange>& ranges, QString* error) {
+    if (store.access() == StoreAccess::ReadOnly)
+        return fail(error, store, QStringLiteral("opened read-only: cannot store sensor flags"));
+    QSqlDatabase& db = store.database();
+    if (!db.transaction())
+        return fail(error, store,
+                    QStringLiteral("cannot store sensor flags: %1").arg(db.lastError().text()));
+    QSqlQuery q(db);
+    const auto rollback = [&](const QString& why) {
+        db.rollback();
+        return fail(error, store,
+                    QStringLiteral("run %1: cannot store sensor flags: %2").arg(runDbId).arg(why));
+    };
+    q.prepare(QStringLiteral("SELECT count(*) FROM run WHERE id = ?"));
+    q.addBindValue(runDbId);
+    if (!q.exec() || !q.next()) return rollback(q.lastError().text());
+    if (q.value(0).toInt() != 1) return rollback(QStringLiteral("no such run"));
+    q.prepare(QStringLiteral("DELETE FROM sample_flag WHERE run_id = ?"));
+    q.addBindValue(runDbId);
+    if (!q.exec()) return rollback(q.lastError().text());
+    q.prepare(QStringLiteral(
+        "INSERT INTO sample_flag (run_id, channel, kind, from_t, to_t) VALUES (?, ?, ?, ?, ?)"));
+    for (const sensors::FlaggedRange& r : ranges) {
+        q.bindValue(0, runDbId);
+        q.bindValue(1, r.channel);
+        q.bindValue(2, sensors::toString(r.fault));
+        q.bindValue(3, r.from_s);
+        q.bindValue(4, r.to_s);
+        if (!q.exec())
+            return rollback(QStringLiteral("%1 %2 %3–%4 s: %5")
+                                .arg(r.channel, sensors::toString(r.fault))
+                                .arg(r.from_s)
+                                .arg(r.to_s)
+                                .arg(q.lastError().text()));
+    }
+    if (!db.commit()) return rollback(db.lastError().text());
+    return true;
+}
+
+std::optional<std::vector<sensors::FlaggedRange>> flagRun(
+    CampaignStore& store, qint64 runDbId, const sensors::SensorHealthSettings& settings,
+    QString* error, const std::vector<sensors::RedundantPair>& redundant) {
+    QSqlQuery q(store.database());
+    q.prepare(QStringLiteral("SELECT campaign_id, name FROM run WHERE id = ?"));
+    q.addBindValue(runDbId);
+    if (!q.exec() || !q.next()) {
+        fail(error, store, QStringLiteral("no run with id %1").arg(runDbId));
+        return std::nullopt;
+    }
+    const qint64 campaignId = q.value(0).toLongLong();
+    const QString name = q.value(1).toString();
+    // The campaign's channels (quantity, role) decide which checks apply.
+    const std::optional<Campaign> campaign = store.loadCampaign(campaignId, error);
+    if (!campaign) return std::nullopt;
+    const auto run = std::find_if(campaign->runs.begin(), campaign->runs.end(),
+                                  [&](const Run& r) { return r.id == name; });
+    if (run == campaign->runs.end()) {
+        fail(error, store,
+             QStringLiteral("run %1 is not in campaign %2").arg(name).arg(campaignId));
+        return std::nullopt;
+    }
+    std::vector<sensors::FlaggedRange> ranges;
+    try {
+        ranges = sensors::flaggedRanges(
+            sensors::checkRun(run->samples, campaign->channels, redundant, settings));
+    } catch (const std::invalid_argument& e) {
+        fail(error, store,
+             QStringLiteral("run %1: %2").arg(name, QString::fromStdString(e.what())));
+        return std::nullopt;
+    }
+    if (!replaceRunFlags(store, runDbId, ranges, error)) return std::nullopt;
+    return ranges;
+}
+
+std::optional<qint64> runDbId(CampaignStore& store, qint64 campaignId, const QString& runName,
+                              QString* error) {
+    QSqlQuery q(store.database());
+    q.prepare(QStringLiteral("SELECT id FROM run WHERE campaign_id = ? AND name = ?"));
+    q.addBindValue(campaignId);
+    q.addBindValue(runName);
+    if (!q.exec() || !q.next()) {
+        fail(error, store,
+             QStringLiteral("campaign %1 has no run '%2'").arg(campaignId).arg(runName));
+        return std::nullopt;
+    }
+    return q.value(0).toLongLong();
+}
+
+std::optional<std::map<QString, std::vector<sensors::FlaggedRange>>> loadSampleFlags(
+    CampaignStore& store, qint64 campaignId, QString* error) {
+    std::map<QString, std::vector<sensors::FlaggedRange>> flags;
+    QSqlQuery q(store.database());
+    // A store below v5 opened read-only has no table and so no flags.
+    if (!q.exec(QStringLiteral(
+            "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'sample_flag'"))) {
+        fail(error, store,
+             QStringLiteral("cannot read sensor flags: %1").arg(q.lastError().text()));
+        return std::nullopt;
+    }
+    if (!q.next()) return flags;
+    q.prepare(QStringLiteral(
+        "SELECT r.name, f.channel, f.kind, f.from_t, f.to_t FROM sample_flag f "
+        "JOIN run r ON r.id = f.run_id WHERE r.campaign_id = ? ORDER BY r.ordinal, f.id"));
+    q.addBindValue(campaignId);
+    if (!q.exec()) {
+        fail(error, store,
+             QStringLiteral("cannot read sensor flags: %1").arg(q.lastError().text()));
+        return std::nullopt;
+    }
+    while (q.next()) {
+        const auto fault = sensors::sensorFaultFromString(q.value(2).toString());
+        if (!fault) {
+            fail(error, store,
+                 QStringLiteral("sensor flag of run %1, %2: unknown kind '%3'")
+                     .arg(q.value(0).toString(), q.value(1).toString(), q.value(2).toString()));
+            return std::nullopt;
+        }
+        flags[q.value(0).toString()].push_back(
+            {q.value(1).toString(), *fault, q.value(3).toDouble(), q.value(4).toDouble()});
+    }
+    return flags;
+}
+
+}  // namespace driftlab::db
