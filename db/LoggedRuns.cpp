@@ -38,15 +38,6 @@ std::optional<LoggedRunState> loggedRunState(CampaignStore& store, qint64 runId,
     return s;
 }
 
-std::optional<qint64> findRunId(CampaignStore& store, qint64 campaignId, const QString& name) {
-    QSqlQuery q(store.database());
-    q.prepare(QStringLiteral("SELECT id FROM run WHERE campaign_id = ? AND name = ?"));
-    q.addBindValue(campaignId);
-    q.addBindValue(name);
-    if (q.exec() && q.next()) return q.value(0).toLongLong();
-    return std::nullopt;
-}
-
 std::vector<qint64> markInterruptedRuns(CampaignStore& store, QString* error) {
     std::vector<qint64> logging, interrupted;
     QSqlQuery q(store.database());

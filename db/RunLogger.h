@@ -118,8 +118,6 @@ private:
 
 /// The state of a logged run, or nullopt with `error`.
 std::optional<LoggedRunState> loggedRunState(CampaignStore& store, qint64 runId, QString* error);
-/// A run by campaign id and name, or nullopt.
-std::optional<qint64> findRunId(CampaignStore& store, qint64 campaignId, const QString& name);
 /// Marks 'logging' runs whose logger is gone (its lock is free) 'interrupted',
 /// with an event each; returns their ids.
 std::vector<qint64> markInterruptedRuns(CampaignStore& store, QString* error);

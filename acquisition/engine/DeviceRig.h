@@ -1,6 +1,7 @@
 #pragma once
-// A real rig behind the TestRig interface: a temperature module polled over
-// Modbus by its own worker thread (devices/DeviceWorker), in real time. The
+// A real rig behind the TestRig interface: a temperature module and,
+// optionally, the controller link, each polled over Modbus by its own worker
+// thread (devices/DeviceWorker), in real time. The
 // machine runs the procedure's motion from its own NC programme; DriftLab
 // logs what the devices read on the procedure's clock. A device that stops
 // answering leaves NaN in its columns and a gap in the event log, and the
@@ -18,6 +19,8 @@ namespace driftlab::engine {
 struct DeviceRigSpec {
     modbus::ModbusUrl temperature_url;
     devices::ChannelRegisterMap temperature_map;
+    /// Position, feed, torque and machine state (register map block 0).
+    std::optional<modbus::ModbusUrl> controller_url;
     double poll_interval_s = 1.0;
     /// Machine, screw, travel and the channels (ids as in the map, with their
     /// roles); without it, a campaign with the map's channels as `other`.

@@ -4,6 +4,7 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <chrono>
+#include <cmath>
 
 #include "acquisition/engine/RunPlayback.h"
 #include "db/CampaignStore.h"
@@ -114,6 +115,17 @@ bool ProcedureEngine::waitUntil(qint64 wall_ms) {
     return !m_abortRequested;
 }
 
+bool ProcedureEngine::waitForDevices(RunSource& source) {
+    std::unique_lock lock(m_mutex);
+    while (source.deviceLost() && !m_abortRequested) {
+        lock.unlock();
+        if (QCoreApplication::instance()) QCoreApplication::processEvents();
+        lock.lock();
+        m_wake.wait_for(lock, std::chrono::milliseconds(20));
+    }
+    return !m_abortRequested;
+}
+
 std::optional<qint64> ProcedureEngine::run(QString* error) {
     std::vector<procedures::PlannedRun> planned;
     try {
@@ -209,16 +221,42 @@ bool ProcedureEngine::playRun(RunPlayback& pb, QString* error) {
             m_progress({pb.run.id, pb.index, pb.count, pb.time_s, pb.run.duration_s, state()});
     };
     report();
+    // After a pause a simulated run goes on where it stopped; a real one at
+    // the time it is now (run time stays wall time; the pause is a gap).
+    auto afterPause = [&] {
+        if (m_rig.realTime()) {
+            const double elapsed_s = (nowMs() - wallStart) / 1000.0;
+            pb.time_s = std::max(pb.time_s, runStart_s + std::floor(elapsed_s / step_s) * step_s);
+        } else {
+            wallStart = nowMs();
+            runStart_s = pb.time_s;
+        }
+    };
+    auto logSourceEvents = [&] {
+        for (const SourceEvent& e : source->takeEvents())
+            pb.logger.appendEvent(e.level, e.source, e.message);
+    };
     while (!source->finished()) {
         if (m_pauseRequested) {
             const double pausedAt_s = pb.time_s;
             report();
             if (!waitWhilePaused()) return true;
-            if (m_rig.realTime())
-                pb.logger.appendEvent(QStringLiteral("info"), QStringLiteral("engine"),
-                                      QStringLiteral("paused at %1 s").arg(pausedAt_s));
-            wallStart = nowMs();
-            runStart_s = pb.time_s;
+            pb.logger.appendEvent(QStringLiteral("info"), QStringLiteral("engine"),
+                                  QStringLiteral("paused by the operator at %1 s").arg(pausedAt_s));
+            afterPause();
+        }
+        if (m_procedure.on_device_loss == procedures::DeviceLossPolicy::Pause &&
+            source->deviceLost()) {
+            logSourceEvents();
+            pb.logger.appendEvent(QStringLiteral("warning"), QStringLiteral("engine"),
+                                  QStringLiteral("paused at %1 s: a device stopped answering "
+                                                 "(on_device_loss: pause)")
+                                      .arg(pb.time_s));
+            setState(EngineState::Paused);
+            report();
+            if (!waitForDevices(*source)) return true;
+            setState(EngineState::Running);
+            afterPause();
         }
         if (m_abortRequested) return true;
         const double next_s = pb.time_s + step_s;
@@ -237,8 +275,7 @@ bool ProcedureEngine::playRun(RunPlayback& pb, QString* error) {
         }
         pb.log(out, m_rows);
         pb.logMotionUntil(pb.time_s);
-        for (const SourceEvent& e : source->takeEvents())
-            pb.logger.appendEvent(e.level, e.source, e.message);
+        logSourceEvents();
         QString why;
         if (pb.logger.commitIfDue(&why, m_options.commit_interval_ms)) {
             failedCommits = 0;

@@ -73,6 +73,8 @@ private:
     bool playRun(RunPlayback& playback, QString* error);
     /// Waits until `wall_ms` (steady clock) while running; returns false on abort.
     bool waitUntil(qint64 wall_ms);
+    /// Blocks while a device of `source` is lost (policy pause); false on abort.
+    bool waitForDevices(RunSource& source);
     /// Blocks while paused; false on abort.
     bool waitWhilePaused();
     void setState(EngineState state);

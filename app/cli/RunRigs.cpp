@@ -30,6 +30,11 @@ const QCommandLineOption kMachine{
     QStringLiteral("Modbus rig: a campaign.json (no runs) naming the machine, the screw and the "
                    "channels (ids as in the device map, with their roles)."),
     QStringLiteral("FILE")};
+const QCommandLineOption kController{
+    QStringLiteral("controller"),
+    QStringLiteral("Modbus rig: the controller link (position, feed, torque, machine state; "
+                   "docs/modbus-register-map.md), modbus://HOST:PORT."),
+    QStringLiteral("URL")};
 const QCommandLineOption kPoll{QStringLiteral("poll-interval-s"),
                                QStringLiteral("Modbus rig: seconds between polls of the module."),
                                QStringLiteral("S"), QStringLiteral("1")};
@@ -50,6 +55,10 @@ std::unique_ptr<engine::TestRig> makeDeviceRig(const QCommandLineParser& parser,
     if (!map) throw CliError(error, 2);
     spec.temperature_map = *map;
     spec.poll_interval_s = positiveNumberOption(parser, kPoll);
+    if (parser.isSet(kController)) {
+        spec.controller_url = modbus::parseModbusUrl(parser.value(kController), &error);
+        if (!spec.controller_url) throw CliError(QStringLiteral("--controller: ") + error, 2);
+    }
     if (parser.isSet(kMachine)) {
         QFile file(parser.value(kMachine));
         if (!file.open(QIODevice::ReadOnly))
@@ -67,7 +76,7 @@ std::unique_ptr<engine::TestRig> makeDeviceRig(const QCommandLineParser& parser,
 }  // namespace
 
 QList<QCommandLineOption> rigOptions() {
-    return {kSeed, kEffect, kDeviceMap, kMachine, kPoll};
+    return {kSeed, kEffect, kDeviceMap, kController, kMachine, kPoll};
 }
 
 std::unique_ptr<engine::TestRig> makeRig(const QCommandLineParser& parser, const QString& rig,
@@ -86,7 +95,9 @@ std::unique_ptr<engine::TestRig> makeRig(const QCommandLineParser& parser, const
         spec.sample_interval_s = procedure.sample_interval_s;
         return std::make_unique<engine::SimulatedRig>(spec);
     }
-    if (rig.startsWith(QLatin1String("modbus://"))) return makeDeviceRig(parser, rig);
+    if (rig.startsWith(QLatin1String("modbus://")) ||
+        rig.startsWith(QLatin1String("modbus-rtu://")))
+        return makeDeviceRig(parser, rig);
     throw CliError(QStringLiteral("--rig: '%1' is not a rig (sim, modbus://HOST:PORT)").arg(rig),
                    2);
 }

@@ -1,0 +1,48 @@
+#pragma once
+// The run source of a DeviceRig: the latest reading of every device, logged
+// at the procedure's sample times. A reading older than three polls counts
+// as missing (NaN), so a lost device leaves a hole in its columns only; its
+// outage and reconnect are events, and machine-state changes too.
+
+#include <QDateTime>
+
+#include "acquisition/devices/ControllerLink.h"
+#include "acquisition/devices/TemperatureDevice.h"
+#include "acquisition/engine/DeviceRig.h"
+
+namespace driftlab::engine {
+
+class DeviceRunSource : public RunSource {
+public:
+    DeviceRunSource(const DeviceRigSpec& spec, const std::vector<QString>& columns,
+                    double duration_s);
+    ~DeviceRunSource() override;
+
+    void advanceTo(double until_s, rig::RunOutput& out) override;
+    double time_s() const override { return m_t; }
+    bool finished() const override { return m_t >= m_duration_s - 1e-9; }
+    void replan(const procedures::PlannedRun& run) override;
+    std::vector<SourceEvent> takeEvents() override { return std::exchange(m_events, {}); }
+    bool deviceLost() const override { return m_lostDevices > 0; }
+
+private:
+    int columnOf(const QString& id) const;
+    void set(int column, double value, const QDateTime& at);
+    /// Errors and gaps of a device into events; counts it lost until its gap closes.
+    template <typename Device>
+    void watch(Device* device, const QString& source);
+
+    std::vector<QString> m_columns;
+    double m_duration_s, m_t = 0;
+    qint64 m_stale_ms;
+    std::vector<double> m_latest;
+    std::vector<QDateTime> m_readAt;
+    std::vector<int> m_temperatureColumn;  ///< campaign column of each map channel, or -1
+    std::vector<SourceEvent> m_events;
+    int m_lostDevices = 0;
+    std::optional<MachineState> m_machineState;
+    std::unique_ptr<devices::TemperatureDevice> m_temperature;
+    std::unique_ptr<devices::ControllerDevice> m_controller;
+};
+
+}  // namespace driftlab::engine
