@@ -9,6 +9,7 @@
 #include "acquisition/engine/RunPlayback.h"
 #include "db/CampaignStore.h"
 #include "db/RunLogger.h"
+#include "db/SampleFlagStore.h"
 
 namespace driftlab::engine {
 namespace {
@@ -40,6 +41,25 @@ db::RunHeader headerOf(const procedures::PlannedRun& run, const procedures::Proc
             run.description,
             {{QStringLiteral("procedure"), p.name},
              {QStringLiteral("procedure_kind"), toString(p.kind)}}};
+}
+
+/// The sensor self-diagnosis of what was logged, stored with the run: the
+/// models leave flagged samples out unless told otherwise.
+void flagLoggedRun(db::CampaignStore& store, db::RunLogger& logger) {
+    QString why;
+    if (!logger.commit(&why)) return;  // the logger reports it again when it finishes
+    const auto flagged = db::flagRun(store, logger.runId(), {}, &why);
+    QStringList channels;
+    for (const auto& range : flagged.value_or(std::vector<sensors::FlaggedRange>{}))
+        if (!channels.contains(range.channel)) channels << range.channel;
+    logger.appendEvent(flagged ? QStringLiteral("info") : QStringLiteral("warning"),
+                       QStringLiteral("sensor health"),
+                       !flagged ? QStringLiteral("not checked: %1").arg(why)
+                       : channels.isEmpty()
+                           ? QStringLiteral("no flagged samples")
+                           : QStringLiteral("%1 flagged ranges on %2; models leave them out")
+                                 .arg(flagged->size())
+                                 .arg(channels.join(QStringLiteral(", "))));
 }
 
 }  // namespace
@@ -183,6 +203,7 @@ std::optional<qint64> ProcedureEngine::run(QString* error) {
         RunPlayback playback{planned[i], i, planned.size(), *logger, campaign->sample_columns};
         if (resuming) playback.resumeFrom(*resumed, m_rig.realTime());
         const bool ok = playRun(playback, error);
+        flagLoggedRun(*store, *logger);
         if (!ok || m_abortRequested) {
             if (m_abortRequested)
                 logger->appendEvent(

@@ -165,7 +165,11 @@ void ChannelHealthChecker::checkFrozen(Pending& sample, HealthUpdate& update) {
         sample.flags |= bit(SensorFault::Frozen);
         return;
     }
-    if (sample.time_s - m_stretch->start_s < m_settings.frozen_window_s) return;
+    // A few slow samples inside one quantisation step are not evidence: a
+    // noisy sensor read every minute does that now and then.
+    if (sample.time_s - m_stretch->start_s < m_settings.frozen_window_s ||
+        sample.index - m_stretch->start_index + 1 < std::size_t(m_settings.frozen_min_samples))
+        return;
     m_stretch->frozen = true;
     sample.flags |= bit(SensorFault::Frozen);
     for (auto& w : m_window)

@@ -56,6 +56,8 @@ bool SensorHealthSettings::isValid(QString* error) const {
         return refuse(error, QStringLiteral("speed_max_abs_rpm must be > 0"));
     if (!positiveFinite(frozen_window_s))
         return refuse(error, QStringLiteral("frozen_window_s must be > 0"));
+    if (frozen_min_samples < 2)
+        return refuse(error, QStringLiteral("frozen_min_samples must be at least 2"));
     // Zero tolerance would call a live sensor that repeats a code "moving";
     // a tolerance of a kelvin would call a quiet, live room sensor frozen.
     if (!std::isfinite(frozen_tolerance_K) || frozen_tolerance_K < 0 || frozen_tolerance_K > 0.5)

@@ -51,8 +51,10 @@ struct SensorHealthSettings {
     double speed_max_abs_rpm = 100'000;
 
     // Frozen value (temperature channels): the value stays within
-    // frozen_tolerance_K (one quantisation step) for at least frozen_window_s.
+    // frozen_tolerance_K (one quantisation step) for at least frozen_window_s
+    // and at least frozen_min_samples samples.
     double frozen_window_s = 300;
+    int frozen_min_samples = 20;
     double frozen_tolerance_K = 0.01;
 
     // Spikes (temperature channels): Hampel filter, |x − median| >
