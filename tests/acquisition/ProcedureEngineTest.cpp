@@ -13,6 +13,7 @@
 
 #include "acquisition/engine/ProcedureEngine.h"
 #include "acquisition/engine/SimulatedRig.h"
+#include "acquisition/live/LiveSampleBuffer.h"
 #include "core/rig/CampaignSimulator.h"
 #include "db/CampaignStore.h"
 #include "db/RunLogger.h"
@@ -213,4 +214,48 @@ TEST(ProcedureEngine, Iso230_3WarmupEndsWhenTheCriterionHolds) {
     ASSERT_TRUE(q.next());
     EXPECT_TRUE(q.value(0).toString().contains(QLatin1String("stabilised")))
         << q.value(0).toString().toStdString();
+}
+
+TEST(ProcedureEngine, LiveReadPathSeesEveryLoggedRowWhileTheRunGoesOn) {
+    QTemporaryDir dir;
+    auto procedure = twoMovingStates();
+    procedure.moving_states->states.resize(1);
+    const rig::RigSpec spec = rigFor(procedure);
+    const auto columns = rig::rigCampaignHeader(spec, false).sample_columns;
+    live::LiveSampleBuffer buffer(QStringList(columns.begin(), columns.end()));
+    engine::SimulatedRig rig(spec);
+    engine::EngineOptions options = storeAt(dir.filePath("lab.sqlite"));
+    options.speedup = 4000;
+    engine::ProcedureEngine engine(procedure, rig, options);
+    engine.setRowObserver([&](double t, const double* values, std::size_t count) {
+        QString error;
+        EXPECT_TRUE(buffer.append(t, {values, count}, &error)) << error.toStdString();
+    });
+    // A reader on its own thread, as the GUI's plots and the live compensation read.
+    std::atomic<bool> done{false};
+    SampleSeries seen;
+    seen.columns = columns;
+    seen.values.assign(columns.size(), {});
+    int reads = 0;
+    std::thread reader([&] {
+        std::int64_t next = 0;
+        while (!done || next < buffer.rowCount()) {
+            buffer.waitForRows(next + 1, std::chrono::milliseconds(20));
+            const live::LiveRows rows = buffer.rowsSince(next);
+            reads += !rows.empty();
+            for (std::int64_t r = rows.beginRow(); r < rows.endRow(); ++r) {
+                seen.time_s.push_back(rows.time_s(r));
+                for (int c = 0; c < rows.columns(); ++c)
+                    seen.values[std::size_t(c)].push_back(rows.value(r, c));
+            }
+            next = rows.endRow();
+        }
+    });
+    QString error;
+    const auto id = engine.run(&error);
+    done = true;
+    reader.join();
+    ASSERT_TRUE(id) << error.toStdString();
+    EXPECT_GT(reads, 10);  // it read while the run went on, not once at the end
+    EXPECT_EQ(seen, loadOnly(dir.filePath("lab.sqlite"), *id).runs.front().samples);
 }
