@@ -1,0 +1,199 @@
+#include "ui/app/MainWindow.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QHeaderView>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTableView>
+#include <QToolBar>
+#include <QTreeView>
+
+#include "db/CampaignStore.h"
+#include "db/StoreOverview.h"
+#include "ui/app/Session.h"
+#include "ui/models/CampaignTreeModel.h"
+#include "ui/models/EventLogModel.h"
+#include "ui/pages/CompensationPage.h"
+#include "ui/pages/DiagnosisPage.h"
+#include "ui/pages/Iso230_2Page.h"
+#include "ui/pages/ModelsPage.h"
+#include "ui/pages/RunPage.h"
+#include "ui/pages/SetupPage.h"
+
+namespace driftlab::ui {
+namespace {
+const QString kRecentKey = QStringLiteral("stores/recent");
+const QString kLastKey = QStringLiteral("stores/last");
+constexpr int kRecentCount = 8;
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      m_session(new Session(this)),
+      m_tree(new CampaignTreeModel(this)),
+      m_events(new EventLogModel(10'000, this)),
+      m_tabs(new QTabWidget(this)) {
+    setWindowTitle(tr("DriftLab"));
+    setObjectName(QStringLiteral("MainWindow"));
+    m_setup = new SetupPage(*m_session, m_tabs);
+    m_run = new RunPage(*m_session, m_tabs);
+    m_models = new ModelsPage(*m_session, m_tabs);
+    m_diagnosis = new DiagnosisPage(*m_session, m_tabs);
+    m_compensation = new CompensationPage(*m_session, m_tabs);
+    m_iso = new Iso230_2Page(*m_session, m_tabs);
+    m_tabs->addTab(m_setup, tr("Set-up"));
+    m_tabs->addTab(m_run, tr("Run"));
+    m_tabs->addTab(m_models, tr("Models"));
+    m_tabs->addTab(m_diagnosis, tr("Diagnosis"));
+    m_tabs->addTab(m_compensation, tr("Compensation"));
+    m_tabs->addTab(m_iso, tr("ISO 230-2"));
+    setCentralWidget(m_tabs);
+    buildDocks();
+    buildMenus();
+
+    auto* runBar = addToolBar(tr("Run control"));
+    runBar->setObjectName(QStringLiteral("RunControl"));
+    runBar->addActions(m_run->runActions());
+    statusBar()->addPermanentWidget(m_run->statusWidget(), 1);
+
+    connect(m_session, &Session::event, m_events, &EventLogModel::append);
+    connect(m_session, &Session::storeChanged, this, [this](const QString& path) {
+        setWindowTitle(tr("DriftLab — %1").arg(path));
+        refreshCampaignTree();
+    });
+    connect(m_session, &Session::storeContentChanged, this, &MainWindow::refreshCampaignTree);
+
+    QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    if (geometry().width() < 400) resize(1280, 800);
+    updateRecentMenu();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildDocks() {
+    m_treeView = new QTreeView(this);
+    m_treeView->setModel(m_tree);
+    m_treeView->setObjectName(QStringLiteral("CampaignTree"));
+    m_treeView->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    connect(m_treeView->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            [this](const QModelIndex& current) {
+                if (current.isValid())
+                    m_session->selectCampaign(
+                        current.data(CampaignTreeModel::CampaignIdRole).toLongLong());
+            });
+    auto* treeDock = new QDockWidget(tr("Campaigns"), this);
+    treeDock->setObjectName(QStringLiteral("CampaignsDock"));
+    treeDock->setWidget(m_treeView);
+    addDockWidget(Qt::LeftDockWidgetArea, treeDock);
+
+    auto* log = new QTableView(this);
+    log->setModel(m_events);
+    log->setObjectName(QStringLiteral("EventLog"));
+    log->horizontalHeader()->setStretchLastSection(true);
+    log->verticalHeader()->hide();
+    connect(m_events, &QAbstractItemModel::rowsInserted, log, [log] { log->scrollToBottom(); });
+    auto* logDock = new QDockWidget(tr("Events"), this);
+    logDock->setObjectName(QStringLiteral("EventsDock"));
+    logDock->setWidget(log);
+    addDockWidget(Qt::BottomDockWidgetArea, logDock);
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New store…"), QKeySequence::New, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("New campaign store"), {},
+                                                          tr("DriftLab stores (*.sqlite)"));
+        if (!path.isEmpty()) openStore(path, true);
+    });
+    file->addAction(tr("&Open store…"), QKeySequence::Open, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open campaign store"), {},
+                                                          tr("DriftLab stores (*.sqlite)"));
+        if (!path.isEmpty()) openStore(path, false);
+    });
+    m_recent = file->addMenu(tr("Recent stores"));
+    file->addSeparator();
+    file->addAction(tr("Run the &demo"), this, &MainWindow::startDemo);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        view->addAction(dock->toggleViewAction());
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About DriftLab"), this, [this] {
+        QMessageBox::about(this, tr("About DriftLab"),
+                           tr("DriftLab: thermal test campaigns on machine-tool feed axes."));
+    });
+}
+
+bool MainWindow::openStore(const QString& path, bool create, bool tellUser) {
+    QString error;
+    if (!m_session->openStore(path, create, &error)) {
+        m_events->append(QStringLiteral("error"), QStringLiteral("store"), error);
+        if (tellUser) QMessageBox::warning(this, tr("Store not opened"), error);
+        return false;
+    }
+    rememberStore(m_session->storePath());
+    return true;
+}
+
+void MainWindow::refreshCampaignTree() {
+    if (m_session->storePath().isEmpty()) return;
+    QString error;
+    auto store = db::CampaignStore::open(m_session->storePath(), db::StoreAccess::ReadOnly, &error);
+    const auto overview = store ? db::storeOverview(*store, &error) : std::nullopt;
+    if (!overview) {
+        m_events->append(QStringLiteral("error"), QStringLiteral("store"), error);
+        return;
+    }
+    m_tree->setOverview(*overview);
+    m_treeView->expandAll();
+    if (const auto id = m_session->campaignId())
+        m_treeView->setCurrentIndex(m_tree->campaignIndex(*id));
+}
+
+void MainWindow::rememberStore(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value(kRecentKey).toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kRecentCount) recent.removeLast();
+    settings.setValue(kRecentKey, recent);
+    settings.setValue(kLastKey, path);
+    updateRecentMenu();
+}
+
+void MainWindow::updateRecentMenu() {
+    m_recent->clear();
+    for (const QString& path : QSettings().value(kRecentKey).toStringList())
+        m_recent->addAction(path, this, [this, path] { openStore(path, false); });
+    m_recent->setEnabled(!m_recent->isEmpty());
+}
+
+void MainWindow::startDemo() {
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+    QDir().mkpath(dir);
+    if (!openStore(QDir(dir).filePath(QStringLiteral("demo.sqlite")), true)) return;
+    m_tabs->setCurrentWidget(m_setup);
+    m_events->append(QStringLiteral("info"), QStringLiteral("demo"),
+                     tr("demo store opened: set up with the simulated rig; press Start on the "
+                        "Run page"));
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    event->accept();
+}
+
+}  // namespace driftlab::ui

@@ -1,0 +1,75 @@
+#pragma once
+// The main window (DESIGN.md section 9): the campaign tree in a dock on the
+// left, the pages as tabs in the centre (Set-up, Run, Models, Diagnosis,
+// Compensation, ISO 230-2), the event log in a dock below, run control in a
+// tool bar and the run state in the status bar. Window layout, the last
+// store and the recent stores persist with QSettings.
+
+#include <QMainWindow>
+
+class QTabWidget;
+class QTreeView;
+class QMenu;
+
+namespace driftlab::ui {
+
+class Session;
+class CampaignTreeModel;
+class EventLogModel;
+class SetupPage;
+class RunPage;
+class ModelsPage;
+class DiagnosisPage;
+class CompensationPage;
+class Iso230_2Page;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    Session& session() { return *m_session; }
+    QTabWidget* pages() const { return m_tabs; }
+    EventLogModel* eventLog() const { return m_events; }
+    CampaignTreeModel* campaignTree() const { return m_tree; }
+    SetupPage* setupPage() const { return m_setup; }
+    RunPage* runPage() const { return m_run; }
+    ModelsPage* modelsPage() const { return m_models; }
+    DiagnosisPage* diagnosisPage() const { return m_diagnosis; }
+    CompensationPage* compensationPage() const { return m_compensation; }
+    Iso230_2Page* iso230_2Page() const { return m_iso; }
+
+    /// Opens a store (creating it when `create`); errors go to the event log
+    /// and, with `tellUser`, to a message box.
+    bool openStore(const QString& path, bool create, bool tellUser = true);
+
+public slots:
+    /// The demo: a new store with the simulated rig set up, ready to run.
+    void startDemo();
+    void refreshCampaignTree();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void buildMenus();
+    void buildDocks();
+    void rememberStore(const QString& path);
+    void updateRecentMenu();
+
+    Session* m_session;
+    CampaignTreeModel* m_tree;
+    EventLogModel* m_events;
+    QTabWidget* m_tabs;
+    QTreeView* m_treeView = nullptr;
+    QMenu* m_recent = nullptr;
+    SetupPage* m_setup;
+    RunPage* m_run;
+    ModelsPage* m_models;
+    DiagnosisPage* m_diagnosis;
+    CompensationPage* m_compensation;
+    Iso230_2Page* m_iso;
+};
+
+}  // namespace driftlab::ui

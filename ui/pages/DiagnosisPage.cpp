@@ -1,0 +1,16 @@
+#include "ui/pages/DiagnosisPage.h"
+
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include "ui/app/Session.h"
+
+namespace driftlab::ui {
+
+DiagnosisPage::DiagnosisPage(Session& session, QWidget* parent)
+    : QWidget(parent), m_session(session) {
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(new QLabel(tr("(to be built)"), this));
+}
+
+}  // namespace driftlab::ui

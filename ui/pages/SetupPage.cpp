@@ -1,0 +1,15 @@
+#include "ui/pages/SetupPage.h"
+
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include "ui/app/Session.h"
+
+namespace driftlab::ui {
+
+SetupPage::SetupPage(Session& session, QWidget* parent) : QWidget(parent), m_session(session) {
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(new QLabel(tr("(to be built)"), this));
+}
+
+}  // namespace driftlab::ui
