@@ -80,6 +80,11 @@ void DeviceWorker::pollNow() {
     QString error;
     std::optional<PolledReading> reading = m_device->poll(&error);
     if (!reading) return failed(error);
+    if (!reading->time_utc.isValid()) {
+        // A pushing device with nothing new: not data (an outage goes on), not a failure.
+        m_timer->start(toMs(m_options.poll_interval_s));
+        return;
+    }
     if (m_outage && m_last_reading_utc.isValid()) emit gap(m_last_reading_utc, reading->time_utc);
     // The cycle ends with data, not with a connect: a device that accepts
     // TCP but never answers stays one cycle with one error.

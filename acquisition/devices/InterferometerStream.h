@@ -1,13 +1,13 @@
 #pragma once
 // A laser interferometer streaming the line protocol (docs/interferometer.md)
-// over TCP. A plain blocking reader: connect, read lines until `end`, hand each
-// corrected reading to a callback. A reader thread or the command line drives
-// it; the GUI can put it behind a signal later.
+// over TCP, read whole: connect, read lines until `end`, hand each corrected
+// reading to a callback. The command line and the tests use it; the rig reads
+// the same connection a slice at a time (InterferometerDevice).
 
 #include <QString>
 #include <functional>
 
-#include "core/interferometer/InterferometerSession.h"
+#include "acquisition/devices/InterferometerConnection.h"
 
 namespace driftlab {
 
@@ -18,15 +18,6 @@ struct InterferometerStreamResult {
     int errorLine = 0;      ///< the line a protocol error is in; 0 for transport errors
     /// The last correction applied ("none: …" or "Edlén, …: … ppm").
     QString correction;
-};
-
-struct InterferometerStreamOptions {
-    QString host = QStringLiteral("127.0.0.1");
-    quint16 port = 0;
-    /// Longest wait for the connection or for the next bytes; a silent
-    /// interferometer is an error, not a hang.
-    int timeout_ms = 10'000;
-    double maxEnvironmentAge_s = 300.0;
 };
 
 /// Reads one stream. Never throws for the peer's faults: a bad line, a closed

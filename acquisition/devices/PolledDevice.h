@@ -15,7 +15,9 @@ namespace driftlab::devices {
 
 /// One poll's result: when it was taken (for gaps) and the device's own
 /// reading type in a QVariant, so one worker carries any device's readings
-/// through queued signals.
+/// through queued signals. A pushing device (the interferometer's stream) may
+/// have nothing new at a poll while its link is fine: it returns a
+/// PolledReading with an invalid time_utc, which is neither data nor a failure.
 struct PolledReading {
     QDateTime time_utc;
     QVariant value;

@@ -6,9 +6,16 @@ namespace driftlab::engine {
 DeviceRig::DeviceRig(DeviceRigSpec spec) : m_spec(std::move(spec)) {}
 
 QString DeviceRig::describe() const {
-    return QStringLiteral("temperature module %1 at %2:%3")
-        .arg(m_spec.temperature_map.name, m_spec.temperature_url.host)
-        .arg(m_spec.temperature_url.port);
+    QString text = QStringLiteral("temperature module %1 at %2:%3")
+                       .arg(m_spec.temperature_map.name, m_spec.temperature_url.host)
+                       .arg(m_spec.temperature_url.port);
+    if (m_spec.controller_url)
+        text += QStringLiteral(", controller at %1").arg(m_spec.controller_url->endpoint());
+    if (m_spec.interferometer)
+        text += QStringLiteral(", interferometer at %1:%2")
+                    .arg(m_spec.interferometer->host)
+                    .arg(m_spec.interferometer->port);
+    return text;
 }
 
 Campaign DeviceRig::campaignHeader(const std::vector<procedures::PlannedRun>&) const {
@@ -36,7 +43,7 @@ Campaign DeviceRig::campaignHeader(const std::vector<procedures::PlannedRun>&) c
 
 std::unique_ptr<RunSource> DeviceRig::open(const procedures::PlannedRun& run, std::size_t,
                                            const std::vector<QString>& columns, QString*) {
-    return std::make_unique<DeviceRunSource>(m_spec, columns, run.duration_s);
+    return std::make_unique<DeviceRunSource>(m_spec, columns, run);
 }
 
 }  // namespace driftlab::engine

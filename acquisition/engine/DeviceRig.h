@@ -1,7 +1,8 @@
 #pragma once
 // A real rig behind the TestRig interface: a temperature module and,
 // optionally, the controller link, each polled over Modbus by its own worker
-// thread (devices/DeviceWorker), in real time. The
+// thread (devices/DeviceWorker), and the interferometer's line stream read on
+// its own thread (devices/InterferometerDevice), in real time. The
 // machine runs the procedure's motion from its own NC programme; DriftLab
 // logs what the devices read on the procedure's clock. A device that stops
 // answering leaves NaN in its columns and a gap in the event log, and the
@@ -11,6 +12,7 @@
 #include <QString>
 
 #include "acquisition/devices/ChannelRegisterMap.h"
+#include "acquisition/devices/InterferometerConnection.h"
 #include "acquisition/engine/TestRig.h"
 #include "acquisition/modbus/ModbusUrl.h"
 
@@ -21,6 +23,11 @@ struct DeviceRigSpec {
     devices::ChannelRegisterMap temperature_map;
     /// Position, feed, torque and machine state (register map block 0).
     std::optional<modbus::ModbusUrl> controller_url;
+    /// The interferometer's line stream (docs/interferometer.md); its readings
+    /// are matched to the planned targets (TargetMatcher).
+    std::optional<InterferometerStreamOptions> interferometer;
+    /// How far a reading's position may be from a planned target, mm.
+    double target_tolerance_mm = 0.05;
     double poll_interval_s = 1.0;
     /// Machine, screw, travel and the channels (ids as in the map, with their
     /// roles); without it, a campaign with the map's channels as `other`.

@@ -5,12 +5,13 @@
 namespace driftlab::engine {
 
 DeviceRunSource::DeviceRunSource(const DeviceRigSpec& spec, const std::vector<QString>& columns,
-                                 double duration_s)
+                                 const procedures::PlannedRun& run)
     : m_columns(columns),
-      m_duration_s(duration_s),
+      m_duration_s(run.duration_s),
       m_stale_ms(qint64(3000 * spec.poll_interval_s)),
       m_latest(columns.size(), std::numeric_limits<double>::quiet_NaN()),
-      m_readAt(columns.size()) {
+      m_readAt(columns.size()),
+      m_matcher(run.programme.measurements, spec.target_tolerance_mm) {
     devices::DeviceWorkerOptions options;
     options.poll_interval_s = spec.poll_interval_s;
     for (const auto& channel : spec.temperature_map.channels)
@@ -44,9 +45,11 @@ DeviceRunSource::DeviceRunSource(const DeviceRigSpec& spec, const std::vector<QS
               QStringLiteral("controller %1").arg(spec.controller_url->endpoint()));
         m_controller->start();
     }
+    if (spec.interferometer) startInterferometer(*spec.interferometer, options);
 }
 
 DeviceRunSource::~DeviceRunSource() {
+    if (m_interferometer) m_interferometer->stopAndWait();
     if (m_controller) m_controller->stopAndWait();
     m_temperature->stopAndWait();
 }
@@ -80,8 +83,55 @@ void DeviceRunSource::watch(Device* device, const QString& source) {
         });
 }
 
+void DeviceRunSource::startInterferometer(const InterferometerStreamOptions& options,
+                                          const devices::DeviceWorkerOptions& worker) {
+    m_interferometerSource =
+        QStringLiteral("interferometer %1:%2").arg(options.host).arg(options.port);
+    m_interferometer = std::make_unique<devices::InterferometerDevice>(options, worker);
+    QObject::connect(m_interferometer.get(), &devices::InterferometerDevice::readingReady,
+                     [this](const devices::InterferometerBatch& batch) {
+                         for (const auto& r : batch.readings) takeReading(r);
+                     });
+    watch(m_interferometer.get(), m_interferometerSource);
+    m_interferometer->start();
+}
+
+void DeviceRunSource::takeReading(const devices::TimedInterferometerReading& r) {
+    const QString& correction = r.reading.correction.description;
+    if (correction != m_correction)
+        m_events.push_back({QStringLiteral("info"), m_interferometerSource,
+                            QStringLiteral("environment correction: %1").arg(correction)});
+    m_correction = correction;
+    const double position_mm = r.reading.position_mm;
+    const auto planned = m_matcher.match(position_mm);
+    if (!planned) {
+        // Once per burst: a machine off its programme would otherwise flood the log.
+        if (!m_unmatchedBurst)
+            m_events.push_back(
+                {QStringLiteral("warning"), m_interferometerSource,
+                 QStringLiteral("reading at %1 mm matches no planned target (within ±%2 mm, "
+                                "after the last matched); not stored")
+                     .arg(position_mm, 0, 'f', 4)
+                     .arg(m_matcher.tolerance_mm())});
+        m_unmatchedBurst = true;
+        return;
+    }
+    m_unmatchedBurst = false;
+    const double time_s = m_anchor_s + m_anchorWall.msecsTo(r.time_utc) / 1000.0;
+    m_readings.push_back({std::max(0.0, time_s), planned->cycle, planned->target_mm,
+                          planned->direction, r.reading.deviation_um});
+}
+
 void DeviceRunSource::advanceTo(double until_s, rig::RunOutput& out) {
     const QDateTime now = QDateTime::currentDateTimeUtc();
+    for (PositioningMeasurement& p : m_readings) {
+        // A reading is due by the advance after it arrived.
+        p.time_s = std::min(p.time_s, until_s);
+        out.readings.push_back(p);
+    }
+    m_readings.clear();
+    m_anchorWall = now;
+    m_anchor_s = until_s;
     out.time_s.push_back(until_s);
     for (std::size_t c = 0; c < m_latest.size(); ++c) {
         const bool fresh = m_readAt[c].isValid() && m_readAt[c].msecsTo(now) <= m_stale_ms;
@@ -90,7 +140,8 @@ void DeviceRunSource::advanceTo(double until_s, rig::RunOutput& out) {
     m_t = until_s;
 }
 
-void DeviceRunSource::replan(const procedures::PlannedRun&) {
+void DeviceRunSource::replan(const procedures::PlannedRun& run) {
+    m_matcher.replan(run.programme.measurements);
     m_events.push_back({QStringLiteral("info"), QStringLiteral("engine"),
                         QStringLiteral("the stabilisation criterion holds: end the warm-up on "
                                        "the machine now")});

@@ -1,6 +1,7 @@
 #include "app/cli/RunRigs.h"
 
 #include <QFile>
+#include <QUrl>
 
 #include "acquisition/engine/DeviceRig.h"
 #include "acquisition/engine/SimulatedRig.h"
@@ -35,9 +36,31 @@ const QCommandLineOption kController{
     QStringLiteral("Modbus rig: the controller link (position, feed, torque, machine state; "
                    "docs/modbus-register-map.md), modbus://HOST:PORT."),
     QStringLiteral("URL")};
+const QCommandLineOption kInterferometer{
+    QStringLiteral("interferometer"),
+    QStringLiteral("Modbus rig: the interferometer's line stream (docs/interferometer.md), "
+                   "tcp://HOST:PORT; its readings are matched to the planned targets."),
+    QStringLiteral("URL")};
+const QCommandLineOption kTolerance{
+    QStringLiteral("target-tolerance-mm"),
+    QStringLiteral("Modbus rig: how far an interferometer reading may be from a planned target "
+                   "to be its reading, mm."),
+    QStringLiteral("MM"), QStringLiteral("0.05")};
 const QCommandLineOption kPoll{QStringLiteral("poll-interval-s"),
                                QStringLiteral("Modbus rig: seconds between polls of the module."),
                                QStringLiteral("S"), QStringLiteral("1")};
+
+InterferometerStreamOptions parseInterferometerUrl(const QString& text) {
+    const QUrl url(text, QUrl::StrictMode);
+    if (!url.isValid() || url.scheme() != QLatin1String("tcp") || url.host().isEmpty() ||
+        url.port() <= 0 || (!url.path().isEmpty() && url.path() != QLatin1String("/")))
+        throw CliError(QStringLiteral("--interferometer: '%1' is not tcp://HOST:PORT").arg(text),
+                       2);
+    InterferometerStreamOptions options;
+    options.host = url.host();
+    options.port = quint16(url.port());
+    return options;
+}
 
 std::unique_ptr<engine::TestRig> makeDeviceRig(const QCommandLineParser& parser,
                                                const QString& rig) {
@@ -59,6 +82,9 @@ std::unique_ptr<engine::TestRig> makeDeviceRig(const QCommandLineParser& parser,
         spec.controller_url = modbus::parseModbusUrl(parser.value(kController), &error);
         if (!spec.controller_url) throw CliError(QStringLiteral("--controller: ") + error, 2);
     }
+    if (parser.isSet(kInterferometer))
+        spec.interferometer = parseInterferometerUrl(parser.value(kInterferometer));
+    spec.target_tolerance_mm = positiveNumberOption(parser, kTolerance);
     if (parser.isSet(kMachine)) {
         QFile file(parser.value(kMachine));
         if (!file.open(QIODevice::ReadOnly))
@@ -76,7 +102,7 @@ std::unique_ptr<engine::TestRig> makeDeviceRig(const QCommandLineParser& parser,
 }  // namespace
 
 QList<QCommandLineOption> rigOptions() {
-    return {kSeed, kEffect, kDeviceMap, kController, kMachine, kPoll};
+    return {kSeed, kEffect, kDeviceMap, kController, kInterferometer, kTolerance, kMachine, kPoll};
 }
 
 std::unique_ptr<engine::TestRig> makeRig(const QCommandLineParser& parser, const QString& rig,

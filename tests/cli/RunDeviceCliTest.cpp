@@ -2,7 +2,10 @@
 // temperature module and the controller (independent implementations of
 // docs/devices.md and docs/modbus-register-map.md) on 127.0.0.1. The module
 // is killed mid-run and comes back: its columns have a hole and the log a
-// gap; the controller's columns never stop.
+// gap; the controller's columns never stop. With --interferometer, an
+// independent stdlib peer (tests/peers/interferometer_stream.py) streams a
+// reading at every planned target of a small ISO 230-2 procedure: each is
+// stored with its planned cycle, target and direction.
 #include <gtest/gtest.h>
 
 #include <QSqlQuery>
@@ -10,6 +13,7 @@
 #include <QThread>
 #include <cmath>
 
+#include "core/procedures/ProcedurePlan.h"
 #include "db/CampaignStore.h"
 #include "tests/acquisition/DevicePeer.h"
 #include "tests/cli/CliRunner.h"
@@ -100,4 +104,140 @@ TEST(RunDeviceCli, pymodbusModuleKilledMidRunLeavesAGapTheControllerKeepsLogging
     controller->kill();
     module->waitForFinished();
     controller->waitForFinished();
+}
+
+namespace {
+
+/// Five targets over 10…110 mm, two linear cycles: 20 readings in about 8 s.
+const QByteArray kPositioningProcedure = R"({"format": "driftlab.procedure/1",
+    "name": "ISO 230-2 on the bench", "kind": "iso230-2", "travel_mm": [0, 120],
+    "sample_interval_s": 0.5, "positioning": {"run_id": "P1", "span_mm": [10, 110],
+    "targets_per_metre": 50, "irregularity": 0, "seed": 1, "cycles": 2, "order": "linear",
+    "feed_mm_min": 12000, "overrun_mm": 2, "dwell_s": 0.3}})";
+
+/// A deviation per reading, all different, so a reading stored against the
+/// wrong planned measurement shows.
+double deviationOf(std::size_t k) {
+    return 1.0 + 0.25 * double(k);
+}
+
+QStringList eventLog(db::CampaignStore& store) {
+    QSqlQuery q(store.database());
+    q.exec(QStringLiteral("SELECT level, source, message FROM event_log ORDER BY id"));
+    QStringList events;
+    while (q.next())
+        events << q.value(0).toString() + " " + q.value(1).toString() + ": " +
+                      q.value(2).toString();
+    return events;
+}
+
+long countPrefix(const QStringList& events, const QString& prefix) {
+    return std::count_if(events.begin(), events.end(),
+                         [&](const QString& e) { return e.startsWith(prefix); });
+}
+
+/// Runs the procedure on the pymodbus module and the interferometer peer
+/// (cut after `dropAfter` readings when set); checks every planned reading
+/// is stored as planned and returns the event log.
+QStringList runPositioningOnTheBench(std::optional<int> dropAfter, int* interferometerPort) {
+    QTemporaryDir dir;
+    const QString procedurePath = dir.filePath(QStringLiteral("iso230-2.json"));
+    QFile f(procedurePath);
+    EXPECT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(kPositioningProcedure);
+    f.close();
+    QString error;
+    const auto procedure = procedures::loadProcedureFile(procedurePath, &error);
+    EXPECT_TRUE(procedure) << error.toStdString();
+    const auto planned = procedures::planRuns(*procedure).front().programme.measurements;
+    EXPECT_EQ(planned.size(), 20u);
+
+    // The peer sends each reading a little ahead of its planned time (the
+    // machine's programme runs its own clock), at the target plus the
+    // deviation; one stray reading off every target after the third.
+    QFile readings(dir.filePath(QStringLiteral("readings.csv")));
+    EXPECT_TRUE(readings.open(QIODevice::WriteOnly));
+    for (std::size_t k = 0; k < planned.size(); ++k) {
+        const auto& e = planned[k];
+        readings.write(QStringLiteral("%1,%2,%3\n")
+                           .arg(0.8 * e.time_s)
+                           .arg(e.target_mm + deviationOf(k) / 1000, 0, 'f', 6)
+                           .arg(deviationOf(k))
+                           .toUtf8());
+        if (k == 2) readings.write(QStringLiteral("%1,5.0,0.0\n").arg(0.8 * e.time_s).toUtf8());
+    }
+    readings.close();
+
+    int modulePort = 0;
+    auto module = startTemperaturePeer(0, &modulePort);
+    QStringList peerArgs{"--scenario", "plan", "--readings", readings.fileName()};
+    if (dropAfter) peerArgs << "--drop-after" << QString::number(*dropAfter);
+    auto interferometer =
+        startTcpPeer(QStringLiteral("interferometer_stream.py"), 0, interferometerPort, peerArgs);
+    const QString db = dir.filePath(QStringLiteral("bench.sqlite"));
+    QProcess run;
+    run.start(QStringLiteral(DRIFTLAB_CLI),
+              {"run", "--procedure", procedurePath, "--db", db, "--rig",
+               QStringLiteral("modbus://127.0.0.1:%1").arg(modulePort), "--device-map",
+               DRIFTLAB_SOURCE_DIR "/resources/devices/temperature-8ch-pt100.json",
+               "--interferometer", QStringLiteral("tcp://127.0.0.1:%1").arg(*interferometerPort),
+               "--poll-interval-s", "0.2"});
+    EXPECT_TRUE(run.waitForStarted());
+    EXPECT_TRUE(run.waitForFinished(120'000));
+    EXPECT_EQ(run.exitCode(), 0) << run.readAllStandardError().constData();
+    const QString campaignId = QString::fromUtf8(run.readAllStandardOutput().trimmed());
+    module->kill();
+    interferometer->kill();
+    module->waitForFinished();
+    interferometer->waitForFinished();
+
+    auto store = db::CampaignStore::open(db, db::StoreAccess::ReadOnly, &error);
+    EXPECT_TRUE(store) << error.toStdString();
+    if (!store) return {};
+    const auto campaign = store->loadCampaign(campaignId.toLongLong(), &error);
+    EXPECT_TRUE(campaign) << error.toStdString();
+    if (!campaign) return {};
+    const QStringList events = eventLog(*store);
+    const auto& stored = campaign->runs.front().positioning;
+    EXPECT_EQ(stored.size(), planned.size()) << events.join('\n').toStdString();
+    for (std::size_t k = 0; k < std::min(stored.size(), planned.size()); ++k) {
+        EXPECT_EQ(stored[k].cycle, planned[k].cycle) << "reading " << k;
+        EXPECT_DOUBLE_EQ(stored[k].target_mm, planned[k].target_mm) << "reading " << k;
+        EXPECT_EQ(stored[k].direction, planned[k].direction) << "reading " << k;
+        // Standard air against a standard-air reference: no correction.
+        EXPECT_NEAR(stored[k].deviation_um, deviationOf(k), 1e-3) << "reading " << k;
+        EXPECT_LE(stored[k].time_s, campaign->runs.front().samples.time_s.back());
+    }
+    // The run is an ISO 230-2 run the evaluation takes as it is.
+    const CliResult iso = runCli({"iso230-2", "--db", db, "--campaign", campaignId, "--json"});
+    EXPECT_EQ(iso.exitCode, 0) << iso.err.constData();
+    return events;
+}
+
+}  // namespace
+
+TEST(RunDeviceCli, interferometerReadingsAreStoredAgainstThePlannedTargets) {
+    if (const QString why = peerUnavailable(); !why.isEmpty()) GTEST_SKIP() << why.toStdString();
+    int port = 0;
+    const QStringList events = runPositioningOnTheBench(std::nullopt, &port);
+    const QString source = QStringLiteral("interferometer 127.0.0.1:%1").arg(port);
+    const std::string log = events.join('\n').toStdString();
+    EXPECT_EQ(countPrefix(events, "info " + source + ": environment correction: Edlén"), 1) << log;
+    EXPECT_EQ(
+        countPrefix(events, "warning " + source + ": reading at 5.0000 mm matches no planned"), 1)
+        << log;
+    EXPECT_EQ(countPrefix(events, "error " + source), 0) << log;
+}
+
+TEST(RunDeviceCli, interferometerDroppedMidRunIsOneErrorOneGapAndMatchingGoesOn) {
+    if (const QString why = peerUnavailable(); !why.isEmpty()) GTEST_SKIP() << why.toStdString();
+    int port = 0;
+    const QStringList events = runPositioningOnTheBench(10, &port);
+    const QString source = QStringLiteral("interferometer 127.0.0.1:%1").arg(port);
+    const std::string log = events.join('\n').toStdString();
+    EXPECT_EQ(countPrefix(events, "error " + source + ": the interferometer at"), 1) << log;
+    EXPECT_EQ(countPrefix(events, "error " + source), 1) << log;
+    EXPECT_EQ(countPrefix(events, "warning " + source + ": gap: no data from"), 1) << log;
+    // The new stream has the same air: the correction is not logged again.
+    EXPECT_EQ(countPrefix(events, "info " + source + ": environment correction:"), 1) << log;
 }
