@@ -30,6 +30,11 @@ void Session::selectCampaign(std::optional<qint64> id) {
     emit campaignSelected(id);
 }
 
+void Session::setRunSetup(const RunSetup& setup) {
+    m_runSetup = setup;
+    emit runSetupChanged();
+}
+
 void Session::notifyStoreChanged() {
     emit storeContentChanged();
 }

@@ -9,8 +9,29 @@
 #include <optional>
 
 #include "core/domain/Campaign.h"
+#include "core/procedures/Procedure.h"
 
 namespace driftlab::ui {
+
+/// What the Set-up page prepares and the Run page runs: the procedure and
+/// the rig it runs on (the options of `driftlab-cli run`).
+struct RunSetup {
+    procedures::Procedure procedure;
+    QString procedure_path;               ///< where it was read from, if from a file
+    QString rig = QStringLiteral("sim");  ///< "sim" or "modbus"
+    // Simulated rig
+    unsigned seed = 1;
+    QStringList effects;  ///< ID=VALUE, as `simulate --effect`
+    double speedup = 600;
+    // Modbus rig
+    QString temperature_url;  ///< modbus://HOST:PORT or modbus-rtu:///dev/…
+    QString device_map_path;
+    QString controller_url;      ///< empty: none
+    QString interferometer_url;  ///< tcp://HOST:PORT, empty: none
+    /// Machine, screw, travel, interferometer and channels (ids as in the
+    /// device map, with roles) for a real rig; the simulated rig has its own.
+    std::optional<Campaign> machine;
+};
 
 class Session : public QObject {
     Q_OBJECT
@@ -22,6 +43,7 @@ public:
     /// The selected campaign as stored; nullopt with `error` when none is
     /// selected or it cannot be read.
     std::optional<Campaign> loadCampaign(QString* error) const;
+    const RunSetup& runSetup() const { return m_runSetup; }
 
 public slots:
     /// Opens (or, `create`, creates) a store; false with `error`.
@@ -29,17 +51,20 @@ public slots:
     void selectCampaign(std::optional<qint64> id);
     /// Something was added to the store (a run, a fit, a table): views refresh.
     void notifyStoreChanged();
+    void setRunSetup(const RunSetup& setup);
 
 signals:
     void storeChanged(const QString& path);
     void campaignSelected(std::optional<qint64> id);
     void storeContentChanged();
+    void runSetupChanged();
     /// A message for the event log (level: info, warning, error).
     void event(const QString& level, const QString& source, const QString& message);
 
 private:
     QString m_storePath;
     std::optional<qint64> m_campaignId;
+    RunSetup m_runSetup;
 };
 
 }  // namespace driftlab::ui
