@@ -38,6 +38,18 @@ std::optional<LoggedRunState> loggedRunState(CampaignStore& store, qint64 runId,
     return s;
 }
 
+std::vector<QString> sampleColumns(CampaignStore& store, qint64 campaignId) {
+    QSqlQuery q(store.database());
+    q.prepare(
+        QStringLiteral("SELECT name FROM channel WHERE campaign_id = ? AND column_ordinal "
+                       "IS NOT NULL ORDER BY column_ordinal"));
+    q.addBindValue(campaignId);
+    std::vector<QString> columns;
+    if (q.exec())
+        while (q.next()) columns.push_back(q.value(0).toString());
+    return columns;
+}
+
 std::vector<qint64> markInterruptedRuns(CampaignStore& store, QString* error) {
     std::vector<qint64> logging, interrupted;
     QSqlQuery q(store.database());

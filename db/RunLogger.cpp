@@ -28,14 +28,6 @@ QSqlQuery prepared(QSqlDatabase& db, const QString& sql, const QVariantList& val
     return q;
 }
 
-std::size_t sampleColumnCount(QSqlDatabase& db, qint64 campaignId) {
-    QSqlQuery q = prepared(db,
-                           QStringLiteral("SELECT count(*) FROM channel WHERE campaign_id = ? AND "
-                                          "column_ordinal IS NOT NULL"),
-                           {campaignId});
-    return q.next() ? std::size_t(q.value(0).toLongLong()) : 0;
-}
-
 bool failWith(QString* error, const QString& why) {
     if (error) *error = why;
     return false;
@@ -91,7 +83,7 @@ std::unique_ptr<RunLogger> RunLogger::begin(CampaignStore& store, qint64 campaig
     qint64 runId = 0;
     std::size_t columns = 0;
     try {
-        columns = sampleColumnCount(db, campaignId);
+        columns = sampleColumns(store, campaignId).size();
         QSqlQuery ordinal = prepared(
             db,
             QStringLiteral("SELECT coalesce(max(ordinal) + 1, 0) FROM run WHERE campaign_id = ?"),
@@ -126,7 +118,7 @@ std::unique_ptr<RunLogger> RunLogger::resume(CampaignStore& store, qint64 runId,
         return nullptr;
     }
     std::unique_ptr<RunLogger> logger(
-        new RunLogger(store, runId, sampleColumnCount(store.database(), state->campaign_id)));
+        new RunLogger(store, runId, sampleColumns(store, state->campaign_id).size()));
     if (!logger->start(error)) return nullptr;
     logger->m_lastTime_s = state->last_sample_s;
     logger->m_rows = state->rows;

@@ -118,6 +118,8 @@ private:
 
 /// The state of a logged run, or nullopt with `error`.
 std::optional<LoggedRunState> loggedRunState(CampaignStore& store, qint64 runId, QString* error);
+/// The sample columns of a campaign in stored order (what a row holds).
+std::vector<QString> sampleColumns(CampaignStore& store, qint64 campaignId);
 /// Marks 'logging' runs whose logger is gone (its lock is free) 'interrupted',
 /// with an event each; returns their ids.
 std::vector<qint64> markInterruptedRuns(CampaignStore& store, QString* error);

@@ -187,8 +187,7 @@ std::optional<qint64> ProcedureEngine::run(QString* error) {
         if (!id) return std::nullopt;
         campaignId = *id;
     }
-    const auto campaign = store->loadCampaign(campaignId, error);
-    if (!campaign) return std::nullopt;
+    const std::vector<QString> columns = db::sampleColumns(*store, campaignId);
 
     setState(EngineState::Running);
     for (std::size_t i = first; i < planned.size(); ++i) {
@@ -200,7 +199,7 @@ std::optional<qint64> ProcedureEngine::run(QString* error) {
             setState(EngineState::Interrupted);
             return std::nullopt;
         }
-        RunPlayback playback{planned[i], i, planned.size(), *logger, campaign->sample_columns};
+        RunPlayback playback{planned[i], i, planned.size(), *logger, columns};
         if (resuming) playback.resumeFrom(*resumed, m_rig.realTime());
         const bool ok = playRun(playback, error);
         flagLoggedRun(*store, *logger);
