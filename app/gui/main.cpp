@@ -3,10 +3,13 @@
 //
 //   driftlab [STORE]          open a store (else the last one)
 //   driftlab --demo           open the demo store, set up with the simulated rig
+//   driftlab --screenshots DIR   save every page as DIR/gui-<page>.png, then quit
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QMessageBox>
 #include <QSettings>
 
+#include "app/gui/ScreenshotTour.h"
 #include "ui/app/MainWindow.h"
 
 int main(int argc, char** argv) {
@@ -22,6 +25,10 @@ int main(int argc, char** argv) {
     const QCommandLineOption demo{QStringLiteral("demo"),
                                   QStringLiteral("Open the demo: the simulated rig, set up.")};
     parser.addOption(demo);
+    const QCommandLineOption screenshots{
+        QStringLiteral("screenshots"),
+        QStringLiteral("Save every page as DIR/gui-<page>.png, then quit."), QStringLiteral("DIR")};
+    parser.addOption(screenshots);
     parser.addPositionalArgument(QStringLiteral("STORE"),
                                  QStringLiteral("Campaign store to open."));
     parser.process(app);
@@ -30,14 +37,28 @@ int main(int argc, char** argv) {
     window.show();
     QSettings settings;
     const bool firstStart = !settings.value(QStringLiteral("demo/offered")).toBool();
-    if (parser.isSet(demo) || firstStart) {
+    if (parser.isSet(demo)) {
         settings.setValue(QStringLiteral("demo/offered"), true);
         window.startDemo();
+    } else if (firstStart) {
+        // Offered, not forced, and not modal: the window stays usable.
+        settings.setValue(QStringLiteral("demo/offered"), true);
+        auto* offer = new QMessageBox(
+            QMessageBox::Question, QStringLiteral("Welcome to DriftLab"),
+            QStringLiteral("Run the demo? A simulated feed axis is set up for you: press Start "
+                           "on the Run page, then fit, diagnose and compensate."),
+            QMessageBox::Yes | QMessageBox::No, &window);
+        offer->setAttribute(Qt::WA_DeleteOnClose);
+        QObject::connect(offer, &QMessageBox::accepted, &window,
+                         &driftlab::ui::MainWindow::startDemo);
+        offer->open();
     } else if (!parser.positionalArguments().isEmpty()) {
         window.openStore(parser.positionalArguments().front(), false);
     } else if (const QString last = settings.value(QStringLiteral("stores/last")).toString();
                !last.isEmpty()) {
         window.openStore(last, false, false);
     }
+    if (parser.isSet(screenshots))
+        driftlab::gui::startScreenshotTour(window, parser.value(screenshots), 1500);
     return app.exec();
 }

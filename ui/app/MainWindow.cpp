@@ -72,9 +72,14 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_session, &Session::storeContentChanged, this, &MainWindow::refreshCampaignTree);
 
     QSettings settings;
-    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
-    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
-    if (geometry().width() < 400) resize(1280, 800);
+    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
+        resize(1280, 800);  // the smallest screen the window is made for
+    if (!restoreState(settings.value(QStringLiteral("window/state")).toByteArray())) {
+        // The pages get the room: a narrow tree, a short log.
+        resizeDocks({findChild<QDockWidget*>(QStringLiteral("CampaignsDock"))}, {280},
+                    Qt::Horizontal);
+        resizeDocks({findChild<QDockWidget*>(QStringLiteral("EventsDock"))}, {150}, Qt::Vertical);
+    }
     updateRecentMenu();
 }
 
