@@ -4,6 +4,7 @@
 //   driftlab [STORE]          open a store (else the last one)
 //   driftlab --demo           open the demo store, set up with the simulated rig
 //   driftlab --screenshots DIR   save every page as DIR/gui-<page>.png, then quit
+#include <QAbstractButton>
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QMessageBox>
@@ -49,8 +50,11 @@ int main(int argc, char** argv) {
                            "on the Run page, then fit, diagnose and compensate."),
             QMessageBox::Yes | QMessageBox::No, &window);
         offer->setAttribute(Qt::WA_DeleteOnClose);
-        QObject::connect(offer, &QMessageBox::accepted, &window,
-                         &driftlab::ui::MainWindow::startDemo);
+        QObject::connect(offer, &QMessageBox::buttonClicked, &window,
+                         [offer, &window](QAbstractButton* button) {
+                             if (offer->standardButton(button) == QMessageBox::Yes)
+                                 window.startDemo();
+                         });
         offer->open();
     } else if (!parser.positionalArguments().isEmpty()) {
         window.openStore(parser.positionalArguments().front(), false);
