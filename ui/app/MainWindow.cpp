@@ -188,6 +188,7 @@ void MainWindow::startDemo() {
     const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
     QDir().mkpath(dir);
     if (!openStore(QDir(dir).filePath(QStringLiteral("demo.sqlite")), true)) return;
+    m_setup->loadDemo();
     m_tabs->setCurrentWidget(m_setup);
     m_events->append(QStringLiteral("info"), QStringLiteral("demo"),
                      tr("demo store opened: set up with the simulated rig; press Start on the "
