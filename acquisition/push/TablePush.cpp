@@ -1,5 +1,7 @@
 #include "acquisition/push/TablePush.h"
 
+#include "acquisition/push/ActiveTableRead.h"
+
 #include <QElapsedTimer>
 #include <algorithm>
 #include <chrono>
@@ -254,12 +256,8 @@ void TablePush::writeCommand(Command command) {
 
 TableImage TablePush::readActive() {
     TableImage image;
-    const std::vector<std::uint16_t> header = read(reg::kActiveHeader, kHeaderCount);
-    std::copy(header.begin(), header.end(), image.header.begin());
-    if (image.version() == 0) return image;
-    const int points = std::min(image.points(), m_identity.capacity);
-    image.plus = read(reg::kActiveData, points);
-    if (image.bidirectional()) image.minus = read(reg::kActiveData + m_identity.capacity, points);
+    QString error;
+    if (!readActiveImage(m_link, m_identity.capacity, image, &error)) throw LinkError{error};
     return image;
 }
 

@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "core/bundle/BundleReader.h"
+#include "core/iso/PositioningRuns.h"
 #include "db/CampaignStore.h"
 #include "db/ZipBundleSource.h"
 
@@ -247,25 +248,17 @@ void printLine(const QString& text) {
 }
 
 const Run& choosePositioningRun(const Campaign& campaign, const QString& wanted) {
-    QStringList ids, positioning, withReadings;
-    for (const Run& run : campaign.runs) {
-        ids << run.id;
-        if (run.positioning.empty()) continue;
-        withReadings << run.id;
-        if (run.kind == RunKind::Positioning) positioning << run.id;
-    }
     QString id = wanted;
     if (id.isEmpty()) {
-        const QStringList& candidates = positioning.isEmpty() ? withReadings : positioning;
-        if (candidates.isEmpty())
-            throw CliError(QStringLiteral("no run of the campaign has positioning readings"));
-        if (candidates.size() > 1)
+        const iso::DefaultRun chosen = iso::defaultPositioningRun(campaign);
+        if (chosen.id.isEmpty())
             throw CliError(
-                QStringLiteral("runs %1 have positioning readings: choose one with --run")
-                    .arg(candidates.join(QStringLiteral(", "))),
-                2);
-        id = candidates.front();
+                chosen.choices.isEmpty() ? chosen.why : chosen.why + QStringLiteral(" with --run"),
+                chosen.choices.isEmpty() ? 1 : 2);
+        id = chosen.id;
     }
+    QStringList ids;
+    for (const Run& run : campaign.runs) ids << run.id;
     for (const Run& run : campaign.runs)
         if (run.id == id) {
             if (run.positioning.empty())

@@ -9,58 +9,16 @@
 #include "app/cli/CompensationPush.h"
 #include "app/cli/FlaggedSamples.h"
 #include "app/cli/ThermalProfile.h"
-#include "core/compensation/CsvExport.h"
-#include "core/compensation/FanucExport.h"
-#include "core/compensation/HeidenhainExport.h"
-#include "core/compensation/LinuxCncExport.h"
-#include "core/compensation/SinumerikExport.h"
+#include "core/compensation/TableExport.h"
 
 namespace driftlab::cli {
 namespace {
 
 using namespace driftlab::compensation;
 
-const QStringList kFormats{
-    QStringLiteral("linuxcnc"),  QStringLiteral("linuxcnc-type1"), QStringLiteral("fanuc"),
-    QStringLiteral("fanuc-g10"), QStringLiteral("sinumerik"),      QStringLiteral("heidenhain"),
-    QStringLiteral("csv"),       QStringLiteral("sinumerik-temp"), QStringLiteral("isg-temp")};
-
-/// The file text for `format`; `axis` is the --axis value or empty.
-ExportResult exportTable(const CompensationTable& table, const QString& format, const QString& axis,
-                         const Campaign& campaign, int magnification) {
-    if (format == QLatin1String("linuxcnc")) return exportLinuxCnc(table, LinuxCncType::Type0);
-    if (format == QLatin1String("linuxcnc-type1"))
-        return exportLinuxCnc(table, LinuxCncType::Type1);
-    if (format == QLatin1String("csv")) return exportCsv(table);
-    if (format == QLatin1String("sinumerik")) {
-        SinumerikSettings settings;
-        if (!axis.isEmpty()) settings.axis = axis;
-        return exportSinumerik(table, settings);
-    }
-    if (format == QLatin1String("heidenhain")) {
-        HeidenhainSettings settings;
-        // The campaign names its axis; the .COM column is that axis's key.
-        const QString name = !axis.isEmpty()                    ? axis
-                             : !campaign.machine.axis.isEmpty() ? campaign.machine.axis
-                                                                : settings.axis;
-        settings.axis = name;
-        settings.table_name = name + QStringLiteral(".COM");
-        return exportHeidenhain(table, settings);
-    }
-    FanucSettings settings;
-    settings.magnification = magnification;
-    if (!axis.isEmpty()) {
-        bool ok = false;
-        settings.axis = axis.toInt(&ok);
-        if (!ok || settings.axis < 1)
-            throw CliError(
-                QStringLiteral("--axis: Fanuc takes a controlled axis number (1, 2, ...), not '%1'")
-                    .arg(axis),
-                2);
-    }
-    return format == QLatin1String("fanuc") ? exportFanucParameters(table, settings)
-                                            : exportFanucG10(table, settings);
-}
+/// The table formats, then the straight-line temperature formats (ThermalProfile.h).
+const QStringList kFormats = tableFormats()
+                             << QStringLiteral("sinumerik-temp") << QStringLiteral("isg-temp");
 
 QString um(double value) {
     return std::isfinite(value) ? QString::number(value, 'f', 3) + QStringLiteral(" µm")
@@ -158,11 +116,17 @@ int compensateCommand(const QStringList& args) {
     limits.max_value_um = positiveNumberOption(parser, maxValue);
     limits.max_step_um = positiveNumberOption(parser, maxStep);
     bool ok = false;
-    const int magnificationValue = parser.value(magnification).toInt(&ok);
-    if (!ok || magnificationValue < 1)
+    TableExportSettings exportSettings;
+    exportSettings.axis = parser.value(axis);
+    exportSettings.magnification = parser.value(magnification).toInt(&ok);
+    if (!ok || exportSettings.magnification < 1)
         throw CliError(QStringLiteral("--magnification: '%1' is not a whole number of at least 1")
                            .arg(parser.value(magnification)),
                        2);
+    if (writeFile && !isTemperatureLineFormat(formatName)) {
+        const QString why = checkTableExport(formatName, exportSettings);
+        if (!why.isEmpty()) throw CliError(QStringLiteral("--") + why, 2);
+    }
 
     // A push is recorded in the --db store: open it for writing from the start.
     Campaign campaign =
@@ -196,8 +160,8 @@ int compensateCommand(const QStringList& args) {
     const CompensationTable& table = built.table;
     QStringList warnings = evaluation.warnings + built.warnings;
     if (writeFile) {
-        const ExportResult exported =
-            exportTable(table, formatName, parser.value(axis), campaign, magnificationValue);
+        exportSettings.campaign_axis = campaign.machine.axis;
+        const ExportResult exported = exportTable(table, formatName, exportSettings);
         if (!exported.ok()) throw CliError(formatName + QStringLiteral(": ") + exported.error);
         writeFileAtomically(parser.value(out), exported.text);
         warnings += exported.warnings;

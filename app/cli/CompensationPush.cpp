@@ -3,9 +3,9 @@
 #include <QJsonArray>
 #include <limits>
 
+#include "acquisition/push/PushRecording.h"
 #include "acquisition/push/TablePush.h"
 #include "app/cli/CliCommon.h"
-#include "db/PushHistory.h"
 
 namespace driftlab::cli {
 namespace {
@@ -31,40 +31,16 @@ const QCommandLineOption kHistory{
                    "--db is recorded in that store)."),
     QStringLiteral("FILE")};
 
-QJsonObject tableJson(const compensation::CompensationTable& table) {
-    QJsonArray plus, minus;
-    for (std::size_t i = 0; i < table.size(); ++i) {
-        plus.append(table.correction_plus_um[i]);
-        minus.append(table.correction_minus_um[i]);
-    }
-    QJsonObject json{{QStringLiteral("start_mm"), table.position_mm.front()},
-                     {QStringLiteral("spacing_mm"), table.spacing_mm()},
-                     {QStringLiteral("points"), int(table.size())},
-                     {QStringLiteral("bidirectional"), table.bidirectional},
-                     {QStringLiteral("correction_plus_um"), plus}};
-    if (table.bidirectional) json[QStringLiteral("correction_minus_um")] = minus;
-    return json;
-}
-
 void record(const PushPlan& plan, const QCommandLineParser& parser,
             const compensation::CompensationTable& table, const QString& run,
             const push::PushResult& result) {
     if (plan.history_path.isEmpty()) return;
-    QString error;
-    auto store = db::CampaignStore::open(plan.history_path, db::StoreAccess::ReadWrite, &error);
-    db::PushRecord push;
+    std::optional<qint64> campaignId;
     if (parser.isSet(QStringLiteral("db")))
-        push.campaign_id = parser.value(QStringLiteral("campaign")).toLongLong();
-    push.run = run;
-    push.controller_url = result.controller;
-    push.table_version = result.version;
-    push.points = int(table.size());
-    push.table_checksum = result.checksum;
-    push.table = tableJson(table);
-    push.result = push::outcomeName(result.outcome);
-    push.message = result.message;
-    push.steps = result.toJson()[QStringLiteral("steps")].toArray();
-    if (!store || !db::storePush(*store, push, &error))
+        campaignId = parser.value(QStringLiteral("campaign")).toLongLong();
+    const db::PushRecord push = push::pushRecord(table, campaignId, run, result);
+    QString error;
+    if (!push::recordPush(plan.history_path, push, &error))
         throw CliError(QStringLiteral("push %1 (%2), but not recorded: %3")
                            .arg(push.result, result.message, error));
 }

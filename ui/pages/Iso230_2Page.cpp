@@ -1,16 +1,226 @@
 #include "ui/pages/Iso230_2Page.h"
 
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
 #include <QLabel>
+#include <QSplitter>
+#include <QTableView>
 #include <QVBoxLayout>
+#include <cmath>
 
+#include "core/iso/PositioningRuns.h"
 #include "ui/app/Session.h"
+#include "ui/models/Iso230_2TargetModel.h"
+#include "ui/widgets/Iso230_2Plot.h"
 
 namespace driftlab::ui {
+namespace {
+
+const QString kSource = QStringLiteral("iso230-2");
+
+struct Figure {
+    const char* key;    ///< as in `iso230-2 --json`
+    const char* label;  ///< symbol and meaning
+    double iso::AxisResult::*value;
+};
+
+const Figure kFigures[] = {
+    {"A", "A  bidirectional accuracy", &iso::AxisResult::a_um},
+    {"A_up", "A↑ unidirectional accuracy ↑", &iso::AxisResult::a_up_um},
+    {"A_down", "A↓ unidirectional accuracy ↓", &iso::AxisResult::a_down_um},
+    {"E", "E  bidirectional systematic error", &iso::AxisResult::e_um},
+    {"E_up", "E↑ systematic error ↑", &iso::AxisResult::e_up_um},
+    {"E_down", "E↓ systematic error ↓", &iso::AxisResult::e_down_um},
+    {"M", "M  mean bidirectional positioning error", &iso::AxisResult::m_um},
+    {"R", "R  bidirectional repeatability", &iso::AxisResult::r_um},
+    {"R_up", "R↑ repeatability ↑", &iso::AxisResult::r_up_um},
+    {"R_down", "R↓ repeatability ↓", &iso::AxisResult::r_down_um},
+    {"B", "B  reversal error (max |B_i|)", &iso::AxisResult::reversal_um},
+    {"B_mean", "B̄  mean reversal error", &iso::AxisResult::mean_reversal_um},
+};
+
+}  // namespace
 
 Iso230_2Page::Iso230_2Page(Session& session, QWidget* parent)
-    : QWidget(parent), m_session(session) {
+    : QWidget(parent),
+      m_session(session),
+      m_run(new QComboBox(this)),
+      m_edition(new QComboBox(this)),
+      m_coverage(new QDoubleSpinBox(this)),
+      m_message(new QLabel(this)),
+      m_warnings(new QLabel(this)),
+      m_view(new QTableView(this)),
+      m_model(new Iso230_2TargetModel(this)),
+      m_plot(new Iso230_2Plot(this)),
+      m_figures(new QGridLayout) {
+    m_run->setMinimumContentsLength(6);
+    m_edition->addItem(tr("ISO 230-2:2014"), QStringLiteral("2014"));
+    m_edition->addItem(tr("ISO 230-2:2006"), QStringLiteral("2006"));
+    m_edition->addItem(tr("ISO 230-2:1997"), QStringLiteral("1997"));
+    m_coverage->setRange(0.5, 5);
+    m_coverage->setDecimals(2);
+    m_coverage->setValue(2);
+    m_coverage->setToolTip(tr("Coverage factor k: R↑_i = 2k·s↑_i, A from x̄ ± k·s"));
+    m_message->setWordWrap(true);
+    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_warnings->setWordWrap(true);
+    m_warnings->setStyleSheet(QStringLiteral("color: #a05000"));
+    m_view->setModel(m_model);
+    m_view->verticalHeader()->hide();
+    m_view->verticalHeader()->setDefaultSectionSize(20);
+    m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+
+    auto* settings = new QHBoxLayout;
+    settings->addWidget(new QLabel(tr("Run"), this));
+    settings->addWidget(m_run);
+    settings->addSpacing(12);
+    settings->addWidget(new QLabel(tr("Edition"), this));
+    settings->addWidget(m_edition);
+    settings->addSpacing(12);
+    settings->addWidget(new QLabel(tr("k"), this));
+    settings->addWidget(m_coverage);
+    settings->addStretch(1);
+
+    auto* figures = new QGroupBox(tr("Axis (µm)"), this);
+    figures->setLayout(m_figures);
+    m_figures->setVerticalSpacing(2);
+    int row = 0;
+    for (const Figure& f : kFigures) {
+        auto* value = new QLabel(figures);
+        value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        m_figures->addWidget(new QLabel(QString::fromUtf8(f.label), figures), row, 0);
+        m_figures->addWidget(value, row++, 1);
+        m_figureLabels.emplace_back(QString::fromLatin1(f.key), value);
+    }
+    m_figures->setRowStretch(row, 1);
+
+    auto* lower = new QSplitter(Qt::Horizontal, this);
+    lower->addWidget(m_plot);
+    lower->addWidget(figures);
+    lower->setStretchFactor(0, 3);
+    lower->setStretchFactor(1, 1);
+    lower->setSizes({700, 300});
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(m_view);
+    split->addWidget(lower);
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 3);
+
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(new QLabel(tr("(to be built)"), this));
+    layout->addLayout(settings);
+    layout->addWidget(m_message);
+    layout->addWidget(m_warnings);
+    layout->addWidget(split, 1);
+
+    connect(m_run, &QComboBox::currentIndexChanged, this, &Iso230_2Page::evaluateRun);
+    connect(m_edition, &QComboBox::currentIndexChanged, this, &Iso230_2Page::evaluateRun);
+    connect(m_coverage, &QDoubleSpinBox::valueChanged, this, &Iso230_2Page::evaluateRun);
+    connect(&m_loading, &QFutureWatcher<LoadedCampaign>::finished, this, &Iso230_2Page::onLoaded);
+    connect(&m_session, &Session::campaignSelected, this, &Iso230_2Page::reload);
+    connect(&m_session, &Session::storeContentChanged, this, &Iso230_2Page::reload);
+    reload();
+}
+
+Iso230_2Page::~Iso230_2Page() {
+    m_loading.waitForFinished();
+}
+
+QString Iso230_2Page::figureText(const QString& key) const {
+    for (const auto& [name, label] : m_figureLabels)
+        if (name == key) return label->text();
+    return {};
+}
+
+void Iso230_2Page::showError(const QString& message) {
+    m_message->setText(
+        QStringLiteral("<b style='color:#b00000'>%1</b>").arg(message.toHtmlEscaped()));
+    emit m_session.event(QStringLiteral("error"), kSource, message);
+}
+
+void Iso230_2Page::reload() {
+    if (m_loading.isRunning()) {
+        m_reloadAgain = true;
+        return;
+    }
+    const auto id = m_session.campaignId();
+    if (m_session.storePath().isEmpty() || !id) {
+        m_campaign.reset();
+        m_run->clear();
+        m_message->setText(tr("Select a campaign with a positioning run in the campaign tree."));
+        return;
+    }
+    m_message->setText(tr("loading the campaign…"));
+    m_loading.setFuture(loadCampaignInBackground(m_session.storePath(), *id, false));
+}
+
+void Iso230_2Page::onLoaded() {
+    LoadedCampaign loaded = m_loading.result();
+    if (m_reloadAgain) {
+        m_reloadAgain = false;
+        return reload();
+    }
+    if (!loaded.campaign) return showError(tr("Loading the campaign: %1").arg(loaded.error));
+    m_campaign = std::move(loaded.campaign);
+    const QString previous = m_run->currentText();
+    const QStringList runs = iso::runsWithPositioning(*m_campaign);
+    {
+        const QSignalBlocker block(m_run);
+        m_run->clear();
+        m_run->addItems(runs);
+        const QString wanted =
+            runs.contains(previous) ? previous : iso::defaultPositioningRun(*m_campaign).id;
+        m_run->setCurrentIndex(wanted.isEmpty() ? 0 : int(runs.indexOf(wanted)));
+    }
+    evaluateRun();
+}
+
+void Iso230_2Page::evaluateRun() {
+    m_evaluation.reset();
+    m_model->setTargets({});
+    m_plot->clear();
+    m_warnings->clear();
+    for (const auto& [name, label] : m_figureLabels) label->clear();
+    if (!m_campaign) return;
+    const QString runId = m_run->currentText();
+    if (runId.isEmpty()) {
+        showError(tr("No run of campaign %1 has positioning readings").arg(m_campaign->name));
+        return emit evaluated();
+    }
+    iso::Settings settings;
+    settings.edition = *iso::editionFromString(m_edition->currentData().toString());
+    settings.coverage_factor = m_coverage->value();
+    const Run* run = nullptr;
+    for (const Run& r : m_campaign->runs)
+        if (r.id == runId) run = &r;
+    const QString source = tr("run %1 of %2").arg(runId, m_campaign->name);
+    iso::Evaluation evaluation = iso::evaluate(iso::readingsOf(*run), settings);
+    if (!evaluation.ok()) {
+        showError(source + QStringLiteral(": ") + evaluation.error);
+        return emit evaluated();
+    }
+    for (std::size_t i = 0; i < std::size(kFigures); ++i) {
+        const double v = evaluation.axis.*kFigures[i].value;
+        m_figureLabels[i].second->setText(std::isfinite(v) ? QString::number(v, 'f', 3)
+                                                           : tr("n/a"));
+    }
+    m_model->setTargets(evaluation.targets);
+    m_plot->show(evaluation);
+    m_message->setText(tr("%1 evaluation of %2: %3 targets, %4 cycles; deviation = actual − "
+                          "target (µm), ↑ = + approach, ↓ = − approach")
+                           .arg(iso::toString(settings.edition), source)
+                           .arg(evaluation.targets.size())
+                           .arg(evaluation.cycles));
+    QStringList notes = evaluation.warnings;
+    for (const QString& why : evaluation.skipped) notes << tr("not determined: %1").arg(why);
+    m_warnings->setText(
+        notes.isEmpty() ? QString() : QStringLiteral("⚠ ") + notes.join(QStringLiteral("\n⚠ ")));
+    m_evaluation = std::move(evaluation);
+    emit evaluated();
 }
 
 }  // namespace driftlab::ui

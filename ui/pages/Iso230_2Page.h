@@ -1,19 +1,71 @@
 #pragma once
-// The Iso230_2 page of the main window (DESIGN.md section 9).
+// The ISO 230-2 results page (docs/iso230.md, docs/gui-compensation.md): a
+// run's positioning readings evaluated as `driftlab-cli iso230-2` does, the
+// per-target table, the axis figures and the mean ± k·s plot for both
+// directions, with the evaluation's warnings.
 
+#include <QFutureWatcher>
 #include <QWidget>
+#include <optional>
+
+#include "core/domain/Campaign.h"
+#include "core/iso/Iso230_2.h"
+#include "ui/widgets/CampaignLoad.h"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QGridLayout;
+class QLabel;
+class QTableView;
 
 namespace driftlab::ui {
 
+class Iso230_2Plot;
+class Iso230_2TargetModel;
 class Session;
 
 class Iso230_2Page : public QWidget {
     Q_OBJECT
 public:
     explicit Iso230_2Page(Session& session, QWidget* parent = nullptr);
+    ~Iso230_2Page() override;
+
+    QComboBox* runBox() const { return m_run; }
+    QComboBox* editionBox() const { return m_edition; }
+    QDoubleSpinBox* coverageBox() const { return m_coverage; }
+    Iso230_2TargetModel* targetModel() const { return m_model; }
+    Iso230_2Plot* plot() const { return m_plot; }
+    /// The axis figure labelled `key` (B, B_mean, R_up, …, A, as in
+    /// `iso230-2 --json`), as shown; empty for an unknown key.
+    QString figureText(const QString& key) const;
+    QLabel* messageLabel() const { return m_message; }
+    QLabel* warningLabel() const { return m_warnings; }
+    const std::optional<iso::Evaluation>& evaluation() const { return m_evaluation; }
+
+signals:
+    void evaluated();
 
 private:
+    void reload();
+    void onLoaded();
+    void evaluateRun();
+    void showError(const QString& message);
+
     Session& m_session;
+    QComboBox* m_run;
+    QComboBox* m_edition;
+    QDoubleSpinBox* m_coverage;
+    QLabel* m_message;
+    QLabel* m_warnings;
+    QTableView* m_view;
+    Iso230_2TargetModel* m_model;
+    Iso230_2Plot* m_plot;
+    QGridLayout* m_figures;
+    std::vector<std::pair<QString, QLabel*>> m_figureLabels;
+    QFutureWatcher<LoadedCampaign> m_loading;
+    bool m_reloadAgain = false;
+    std::optional<Campaign> m_campaign;
+    std::optional<iso::Evaluation> m_evaluation;
 };
 
 }  // namespace driftlab::ui

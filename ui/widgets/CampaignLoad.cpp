@@ -1,0 +1,31 @@
+#include "ui/widgets/CampaignLoad.h"
+
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "db/CampaignStore.h"
+
+namespace driftlab::ui {
+
+std::vector<db::PushRecord> campaignPushes(const QString& storePath, qint64 campaignId) {
+    QString error;
+    auto store = db::CampaignStore::open(storePath, db::StoreAccess::ReadOnly, &error);
+    if (!store) return {};
+    // A store never pushed from has no history table yet: an empty history.
+    auto pushes = db::pushHistory(*store, campaignId, &error);
+    return pushes ? std::move(*pushes) : std::vector<db::PushRecord>{};
+}
+
+QFuture<LoadedCampaign> loadCampaignInBackground(const QString& storePath, qint64 campaignId,
+                                                 bool withPushes) {
+    return QtConcurrent::run([storePath, campaignId, withPushes] {
+        LoadedCampaign loaded;
+        auto store = db::CampaignStore::open(storePath, db::StoreAccess::ReadOnly, &loaded.error);
+        if (!store) return loaded;
+        loaded.campaign = store->loadCampaign(campaignId, &loaded.error);
+        store.reset();
+        if (loaded.campaign && withPushes) loaded.pushes = campaignPushes(storePath, campaignId);
+        return loaded;
+    });
+}
+
+}  // namespace driftlab::ui

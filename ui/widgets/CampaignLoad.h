@@ -1,0 +1,32 @@
+#pragma once
+// Loading a campaign (and its push history) off the GUI thread: the worker
+// opens its own read-only connection, as a QSqlDatabase connection may only
+// be used on the thread that opened it.
+
+#include <QFuture>
+#include <QString>
+#include <optional>
+#include <vector>
+
+#include "core/domain/Campaign.h"
+#include "db/PushHistory.h"
+
+namespace driftlab::ui {
+
+struct LoadedCampaign {
+    std::optional<Campaign> campaign;  ///< nullopt with error
+    QString error;
+    /// The campaign's pushes, oldest first (empty when the store has no
+    /// history yet); filled only when asked for.
+    std::vector<db::PushRecord> pushes;
+};
+
+/// Runs on a worker thread; `withPushes` also reads the push history.
+QFuture<LoadedCampaign> loadCampaignInBackground(const QString& storePath, qint64 campaignId,
+                                                 bool withPushes);
+
+/// The push history of one campaign, read on the calling thread with its own
+/// connection; empty when the store has none yet.
+std::vector<db::PushRecord> campaignPushes(const QString& storePath, qint64 campaignId);
+
+}  // namespace driftlab::ui

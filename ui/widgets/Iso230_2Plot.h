@@ -1,0 +1,27 @@
+#pragma once
+// The ISO 230-2 figure: the mean positional deviation over the target
+// position for both approaches, with x̄ ± k·s as error bars (k = the coverage
+// factor, 2 by default).
+
+#include <QWidget>
+
+#include "core/iso/Iso230_2.h"
+
+class QCustomPlot;
+
+namespace driftlab::ui {
+
+class Iso230_2Plot : public QWidget {
+    Q_OBJECT
+public:
+    explicit Iso230_2Plot(QWidget* parent = nullptr);
+
+    void show(const iso::Evaluation& evaluation);
+    void clear();
+    int graphCount() const;
+
+private:
+    QCustomPlot* m_plot;
+};
+
+}  // namespace driftlab::ui
