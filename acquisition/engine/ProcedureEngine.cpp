@@ -229,6 +229,7 @@ namespace driftlab::engine {
 bool ProcedureEngine::playRun(RunPlayback& pb, QString* error) {
     auto source = m_rig.open(pb.run, pb.index, pb.columns, error);
     if (!source) return false;
+    if (m_observers.run_started) m_observers.run_started(pb.index, pb.run.id, pb.columns);
     const double step_s = m_procedure.sample_interval_s;
     rig::RunOutput out;
     // The wall clock paces the run from (wallStart, runStart); re-based after a pause.
@@ -253,8 +254,10 @@ bool ProcedureEngine::playRun(RunPlayback& pb, QString* error) {
         }
     };
     auto logSourceEvents = [&] {
-        for (const SourceEvent& e : source->takeEvents())
+        for (const SourceEvent& e : source->takeEvents()) {
             pb.logger.appendEvent(e.level, e.source, e.message);
+            if (m_observers.device_event) m_observers.device_event(e);
+        }
     };
     while (!source->finished()) {
         if (m_pauseRequested) {
@@ -293,7 +296,7 @@ bool ProcedureEngine::playRun(RunPlayback& pb, QString* error) {
             source->replan(pb.run);
             pb.logger.appendEvent(QStringLiteral("info"), QStringLiteral("iso230-3"), *note);
         }
-        pb.log(out, m_rows);
+        pb.log(out, m_rows, m_observers.reading);
         pb.logMotionUntil(pb.time_s);
         logSourceEvents();
         QString why;

@@ -49,6 +49,18 @@ struct EngineProgress {
 
 /// A logged row, for the live read path: run time and the campaign's columns.
 using RowObserver = std::function<void(double time_s, const double* values, std::size_t count)>;
+/// A logged interferometer reading, for the live dashboard.
+using ReadingObserver = std::function<void(const PositioningMeasurement&)>;
+
+/// What a GUI watches besides the rows, called on the engine's thread: a run
+/// starting (before its first row; its columns are the row's values), each
+/// interferometer reading and each device event as they are logged.
+struct EngineObservers {
+    std::function<void(std::size_t index, const QString& run, const std::vector<QString>& columns)>
+        run_started;
+    ReadingObserver reading;
+    std::function<void(const SourceEvent&)> device_event;
+};
 
 class ProcedureEngine {
 public:
@@ -68,6 +80,8 @@ public:
         m_progress = std::move(callback);
     }
     void setRowObserver(RowObserver observer) { m_rows = std::move(observer); }
+    /// Set before run(); the observers must be thread-safe towards their readers.
+    void setObservers(EngineObservers observers) { m_observers = std::move(observers); }
 
 private:
     bool playRun(RunPlayback& playback, QString* error);
@@ -88,6 +102,7 @@ private:
     std::condition_variable m_wake;
     std::function<void(const EngineProgress&)> m_progress;
     RowObserver m_rows;
+    EngineObservers m_observers;
 };
 
 }  // namespace driftlab::engine

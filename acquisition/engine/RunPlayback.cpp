@@ -14,7 +14,8 @@ void RunPlayback::resumeFrom(const db::LoggedRunState& state, bool realTime) {
     if (realTime) time_s = state.end_s();
 }
 
-void RunPlayback::log(const rig::RunOutput& out, const RowObserver& observer) {
+void RunPlayback::log(const rig::RunOutput& out, const RowObserver& observer,
+                      const ReadingObserver& readingObserver) {
     const std::size_t width = columns.size();
     for (std::size_t r = 0; r < out.time_s.size(); ++r) {
         if (out.time_s[r] <= m_skipSamples_s) continue;
@@ -23,7 +24,10 @@ void RunPlayback::log(const rig::RunOutput& out, const RowObserver& observer) {
         if (observer) observer(out.time_s[r], row, width);
     }
     for (const PositioningMeasurement& p : out.readings)
-        if (p.time_s > m_skipReadings_s) logger.appendReading(p);
+        if (p.time_s > m_skipReadings_s) {
+            logger.appendReading(p);
+            if (readingObserver) readingObserver(p);
+        }
 }
 
 void RunPlayback::logMotionUntil(double until_s) {

@@ -26,8 +26,9 @@ struct RunPlayback {
     /// to there without logging; a real one goes on from there (the gap is
     /// the time it was down).
     void resumeFrom(const db::LoggedRunState& state, bool realTime);
-    /// Logs what of `out` the log does not hold yet and tells `observer`.
-    void log(const rig::RunOutput& out, const RowObserver& observer);
+    /// Logs what of `out` the log does not hold yet and tells the observers.
+    void log(const rig::RunOutput& out, const RowObserver& observer,
+             const ReadingObserver& readingObserver = {});
     /// Logs the motion segments that end by `until_s`.
     void logMotionUntil(double until_s);
     /// ISO 230-3 axis runs: after a completed warm-up pass whose change from

@@ -27,6 +27,8 @@ QJsonObject loggingFigures(int repetitions);
 void printLoggingLine(const QJsonObject& figures);
 /// LiveReadLatency.cpp: device reading → reader of the live read path, µs.
 QJsonObject liveReadFigures(int readings);
+QJsonObject plotFigures(int repetitions);
+void printPlotLine(const QJsonObject& figures);
 
 namespace {
 
@@ -153,7 +155,7 @@ int benchCommand(const QStringList& args) {
         QStringLiteral("N"), QStringLiteral("50")};
     const QCommandLineOption only{
         QStringLiteral("only"),
-        QStringLiteral("Measure only this figure: push, online, logging, live-read."),
+        QStringLiteral("Measure only this figure: push, online, logging, live-read, plot."),
         QStringLiteral("FIGURE")};
     parseArguments(parser, args, {repeat, noPython, importMb, pushes, only});
     const int pushCount = parser.value(pushes).toInt();
@@ -200,9 +202,18 @@ int benchCommand(const QStringList& args) {
             printLiveReadLine(figures);
         return 0;
     }
+    if (parser.value(only) == QLatin1String("plot")) {
+        const QJsonObject figures = plotFigures(std::max(3, parser.value(repeat).toInt()));
+        endProgressLine();
+        if (parser.isSet(QStringLiteral("json")))
+            printJson(figures);
+        else
+            printPlotLine(figures);
+        return 0;
+    }
     if (parser.isSet(only))
         throw CliError(QStringLiteral("--only: '%1' is not a figure it can measure alone (push, "
-                                      "online, logging, live-read)")
+                                      "online, logging, live-read, plot)")
                            .arg(parser.value(only)),
                        2);
     const int repetitions = std::max(1, parser.value(repeat).toInt());
@@ -228,6 +239,8 @@ int benchCommand(const QStringList& args) {
     for (auto it = push.begin(); it != push.end(); ++it) figures[it.key()] = it.value();
     const QJsonObject liveRead = liveReadFigures(kLiveReadings);
     for (auto it = liveRead.begin(); it != liveRead.end(); ++it) figures[it.key()] = it.value();
+    const QJsonObject plot = plotFigures(repetitions);
+    for (auto it = plot.begin(); it != plot.end(); ++it) figures[it.key()] = it.value();
     if (!parser.isSet(noPython)) {
         printProgress(QStringLiteral("scipy comparison"), 0);
         const QJsonObject scipy = scipyFigures();
@@ -277,6 +290,7 @@ int benchCommand(const QStringList& args) {
                 .arg(import[QStringLiteral("import_peak_memory_ratio")].toDouble(), 0, 'f', 2));
     if (!push.isEmpty()) printPushLine(push);
     printLiveReadLine(liveRead);
+    printPlotLine(plot);
     return 0;
 }
 

@@ -1,14 +1,11 @@
 #include "app/cli/RunRigs.h"
 
 #include <QFile>
-#include <QUrl>
 
-#include "acquisition/engine/DeviceRig.h"
-#include "acquisition/engine/SimulatedRig.h"
+#include "acquisition/engine/RigFactory.h"
 #include "app/cli/CliCommon.h"
 #include "core/bundle/BundleError.h"
 #include "core/bundle/CampaignJson.h"
-#include "core/rig/RigEffects.h"
 
 namespace driftlab::cli {
 namespace {
@@ -50,55 +47,6 @@ const QCommandLineOption kPoll{QStringLiteral("poll-interval-s"),
                                QStringLiteral("Modbus rig: seconds between polls of the module."),
                                QStringLiteral("S"), QStringLiteral("1")};
 
-InterferometerStreamOptions parseInterferometerUrl(const QString& text) {
-    const QUrl url(text, QUrl::StrictMode);
-    if (!url.isValid() || url.scheme() != QLatin1String("tcp") || url.host().isEmpty() ||
-        url.port() <= 0 || (!url.path().isEmpty() && url.path() != QLatin1String("/")))
-        throw CliError(QStringLiteral("--interferometer: '%1' is not tcp://HOST:PORT").arg(text),
-                       2);
-    InterferometerStreamOptions options;
-    options.host = url.host();
-    options.port = quint16(url.port());
-    return options;
-}
-
-std::unique_ptr<engine::TestRig> makeDeviceRig(const QCommandLineParser& parser,
-                                               const QString& rig) {
-    QString error;
-    engine::DeviceRigSpec spec;
-    const auto url = modbus::parseModbusUrl(rig, &error);
-    if (!url) throw CliError(QStringLiteral("--rig: ") + error, 2);
-    spec.temperature_url = *url;
-    if (!parser.isSet(kDeviceMap))
-        throw CliError(QStringLiteral("--rig %1 needs --device-map FILE (the module's register "
-                                      "map)")
-                           .arg(rig),
-                       2);
-    const auto map = devices::loadChannelRegisterMap(parser.value(kDeviceMap), &error);
-    if (!map) throw CliError(error, 2);
-    spec.temperature_map = *map;
-    spec.poll_interval_s = positiveNumberOption(parser, kPoll);
-    if (parser.isSet(kController)) {
-        spec.controller_url = modbus::parseModbusUrl(parser.value(kController), &error);
-        if (!spec.controller_url) throw CliError(QStringLiteral("--controller: ") + error, 2);
-    }
-    if (parser.isSet(kInterferometer))
-        spec.interferometer = parseInterferometerUrl(parser.value(kInterferometer));
-    spec.target_tolerance_mm = positiveNumberOption(parser, kTolerance);
-    if (parser.isSet(kMachine)) {
-        QFile file(parser.value(kMachine));
-        if (!file.open(QIODevice::ReadOnly))
-            throw CliError(
-                QStringLiteral("--machine: %1: %2").arg(file.fileName(), file.errorString()), 2);
-        try {
-            spec.campaign_template = campaignFromJson(file.readAll(), file.fileName());
-        } catch (const BundleError& e) {
-            throw CliError(QStringLiteral("--machine: %1").arg(e.toString()), 2);
-        }
-    }
-    return std::make_unique<engine::DeviceRig>(spec);
-}
-
 }  // namespace
 
 QList<QCommandLineOption> rigOptions() {
@@ -107,25 +55,34 @@ QList<QCommandLineOption> rigOptions() {
 
 std::unique_ptr<engine::TestRig> makeRig(const QCommandLineParser& parser, const QString& rig,
                                          const procedures::Procedure& procedure) {
-    if (rig == QLatin1String("sim")) {
-        rig::RigSpec spec;
-        bool ok = false;
-        spec.seed = parser.value(kSeed).toUInt(&ok);
-        if (!ok) throw CliError(QStringLiteral("--seed: not a non-negative integer"), 2);
-        for (const QString& assignment : parser.values(kEffect)) {
-            QString error;
-            if (!rig::applyEffect(spec.effects, assignment, &error)) throw CliError(error, 2);
-        }
-        spec.campaign_name = procedure.name;
-        spec.travel_mm = procedure.travel_mm;
-        spec.sample_interval_s = procedure.sample_interval_s;
-        return std::make_unique<engine::SimulatedRig>(spec);
+    engine::RigOptions options;
+    options.rig = rig;
+    bool ok = false;
+    options.seed = parser.value(kSeed).toUInt(&ok);
+    if (!ok) throw CliError(QStringLiteral("--seed: not a non-negative integer"), 2);
+    options.effects = parser.values(kEffect);
+    options.device_map_path = parser.value(kDeviceMap);
+    options.controller_url = parser.value(kController);
+    options.interferometer_url = parser.value(kInterferometer);
+    if (options.rig != QLatin1String("sim")) {
+        options.target_tolerance_mm = positiveNumberOption(parser, kTolerance);
+        options.poll_interval_s = positiveNumberOption(parser, kPoll);
     }
-    if (rig.startsWith(QLatin1String("modbus://")) ||
-        rig.startsWith(QLatin1String("modbus-rtu://")))
-        return makeDeviceRig(parser, rig);
-    throw CliError(QStringLiteral("--rig: '%1' is not a rig (sim, modbus://HOST:PORT)").arg(rig),
-                   2);
+    if (parser.isSet(kMachine)) {
+        QFile file(parser.value(kMachine));
+        if (!file.open(QIODevice::ReadOnly))
+            throw CliError(
+                QStringLiteral("--machine: %1: %2").arg(file.fileName(), file.errorString()), 2);
+        try {
+            options.machine = campaignFromJson(file.readAll(), file.fileName());
+        } catch (const BundleError& e) {
+            throw CliError(QStringLiteral("--machine: %1").arg(e.toString()), 2);
+        }
+    }
+    engine::RigError error;
+    auto made = engine::makeRig(options, procedure, &error);
+    if (!made) throw CliError(QStringLiteral("--") + error.toString(), 2);
+    return made;
 }
 
 }  // namespace driftlab::cli
