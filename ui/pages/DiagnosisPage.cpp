@@ -101,8 +101,9 @@ DiagnosisPage::DiagnosisPage(Session& session, QWidget* parent)
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(leftSplit);
     split->addWidget(plots);
-    split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 1);
+    // The plots need the room: residual map and curves over hours.
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 3);
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(top);
