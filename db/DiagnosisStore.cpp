@@ -27,6 +27,23 @@ std::optional<qint64> storeDiagnosis(CampaignStore& store, qint64 campaignId,
     return q.lastInsertId().toLongLong();
 }
 
+bool setAdoptedFit(CampaignStore& store, qint64 diagnosisId, qint64 fitId, QString* error) {
+    QSqlQuery q(store.database());
+    q.prepare(QStringLiteral("UPDATE diagnosis SET adopted_fit_id = ? WHERE id = ?"));
+    q.addBindValue(fitId);
+    q.addBindValue(diagnosisId);
+    if (!q.exec() || q.numRowsAffected() != 1) {
+        *error = QStringLiteral("%1: cannot record fit %2 as adopted by diagnosis %3: %4")
+                     .arg(store.path())
+                     .arg(fitId)
+                     .arg(diagnosisId)
+                     .arg(q.numRowsAffected() == 0 ? QStringLiteral("no such diagnosis")
+                                                   : q.lastError().text());
+        return false;
+    }
+    return true;
+}
+
 std::vector<DiagnosisRecord> diagnoses(CampaignStore& store, qint64 campaignId) {
     QSqlQuery q(store.database());
     q.prepare(

@@ -19,6 +19,8 @@ struct DiagnosisRecord {
 
 std::optional<qint64> storeDiagnosis(CampaignStore& store, qint64 campaignId,
                                      const DiagnosisRecord& diagnosis, QString* error);
+/// Records `fitId` as the adopted extension of stored diagnosis `diagnosisId`.
+bool setAdoptedFit(CampaignStore& store, qint64 diagnosisId, qint64 fitId, QString* error);
 std::vector<DiagnosisRecord> diagnoses(CampaignStore& store, qint64 campaignId);
 
 }  // namespace driftlab::db

@@ -6,31 +6,11 @@
 #include "app/cli/CliCommon.h"
 #include "app/cli/FlaggedSamples.h"
 #include "core/diagnosis/Diagnosis.h"
-#include "db/DiagnosisStore.h"
+#include "db/DiagnosisRecords.h"
 #include "ui/plots/DiagnosisPlots.h"
 
 namespace driftlab::cli {
 namespace {
-
-QJsonObject findingJson(const diagnosis::Finding& f, const diagnosis::ResidualSummary& before) {
-    return {
-        {QStringLiteral("cause"), f.cause},
-        {QStringLiteral("confidence"), jsonNumber(f.confidence)},
-        {QStringLiteral("significant"), f.significant},
-        {QStringLiteral("parameters"),
-         QJsonObject{{f.parameter_name, jsonNumber(f.parameter.value)}}},
-        {QStringLiteral("sigma"), QJsonObject{{f.parameter_name, jsonNumber(f.parameter.sigma)}}},
-        {QStringLiteral("bic_drop"), jsonNumber(f.bic_drop)},
-        {QStringLiteral("evidence"), f.evidence},
-        {QStringLiteral("gain"),
-         QJsonObject{{QStringLiteral("test_rms_before_um"), jsonNumber(before.error_rms_um)},
-                     {QStringLiteral("test_rms_after_um"), jsonNumber(f.test_after.error_rms_um)},
-                     {QStringLiteral("test_temperature_rms_before_K"),
-                      jsonNumber(before.temperature_rms_K)},
-                     {QStringLiteral("test_temperature_rms_after_K"),
-                      jsonNumber(f.test_after.temperature_rms_K)},
-                     {QStringLiteral("reduction"), jsonNumber(f.reduction)}}}};
-}
 
 QJsonArray writePlots(const Campaign& campaign, const diagnosis::DiagnosisResult& r,
                       const QString& directory) {
@@ -93,44 +73,19 @@ int diagnoseCommand(const QStringList& args) {
     const diagnosis::DiagnosisResult r = diagnosis::diagnose(campaign, options);
     if (!r.ok()) throw CliError(r.error);
 
-    QJsonArray findings;
-    for (const auto& f : r.findings) findings << findingJson(f, r.base_test);
-    QJsonObject json{
-        {QStringLiteral("base_model"), QStringLiteral("screw-fdm")},
-        {QStringLiteral("train_runs"), QJsonArray::fromStringList(r.train_runs)},
-        {QStringLiteral("test_runs"), QJsonArray::fromStringList(r.test_runs)},
-        {QStringLiteral("base"),
-         QJsonObject{
-             {QStringLiteral("test_rms_um"), jsonNumber(r.base_test.error_rms_um)},
-             {QStringLiteral("test_peak_um"), jsonNumber(r.base_test.error_peak_um)},
-             {QStringLiteral("test_temperature_rms_K"), jsonNumber(r.base_test.temperature_rms_K)},
-             {QStringLiteral("reading_noise_um"), jsonNumber(r.base_test.error_noise_um)}}},
-        {QStringLiteral("findings"), findings},
-        {QStringLiteral("verdict"), r.verdict}};
-    if (!r.verdict_evidence.isEmpty())
-        json[QStringLiteral("verdict_evidence")] = r.verdict_evidence;
+    QJsonObject json = db::diagnosisJson(r);
     if (parser.isSet(plots))
         json[QStringLiteral("plots")] = writePlots(campaign, r, parser.value(plots));
 
     if (parser.isSet(QStringLiteral("db"))) {
         // The adopted extension is kept as a model fit, the diagnosis with it.
         std::optional<qint64> adopted;
-        if (!r.findings.empty() && r.findings.front().cause == r.verdict) {
-            const auto& f = r.findings.front();
-            QJsonObject parameters;
-            for (const auto& [name, p] : f.fit.parameters)
-                parameters[name] = QJsonObject{{QStringLiteral("value"), jsonNumber(p.value)},
-                                               {QStringLiteral("sigma"), jsonNumber(p.sigma)},
-                                               {QStringLiteral("unit"), p.unit}};
-            adopted = storeFitIfFromDatabase(
-                parser, {0, QStringLiteral("heat-transfer+") + f.cause,
-                         QStringLiteral("positioning"), r.train_runs, r.test_runs, parameters,
-                         findingJson(f, r.base_test)[QStringLiteral("gain")].toObject()});
-        }
+        if (const diagnosis::Finding* f = db::verdictFinding(r))
+            adopted = storeFitIfFromDatabase(parser, db::adoptedExtensionFit(r, *f));
         auto store = openSourceStore(parser, db::StoreAccess::ReadWrite);
         QString error;
         if (!db::storeDiagnosis(*store, parser.value(QStringLiteral("campaign")).toLongLong(),
-                                {0, QStringLiteral("screw-fdm"), r.verdict, adopted, json}, &error))
+                                {0, db::kDiagnosisBaseModel, r.verdict, adopted, json}, &error))
             throw CliError(error);
     }
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "app/cli/CliCommon.h"
-#include "db/SampleFlagStore.h"
+#include "db/FlaggedSampleMask.h"
 
 namespace driftlab::cli {
 
@@ -17,20 +17,12 @@ void leaveOutFlaggedSamples(const QCommandLineParser& parser, Campaign& campaign
     if (!parser.isSet(QStringLiteral("db")) || parser.isSet(QStringLiteral("keep-flagged"))) return;
     auto store = openSourceStore(parser, db::StoreAccess::ReadOnly);
     QString error;
-    const auto flags =
-        db::loadSampleFlags(*store, parser.value(QStringLiteral("campaign")).toLongLong(), &error);
-    if (!flags) throw CliError(error);
-    if (flags->empty()) return;
-    std::size_t samples = 0;
-    QStringList channels;
-    for (Run& run : campaign.runs) {
-        const auto found = flags->find(run.id);
-        if (found == flags->end()) continue;
-        QStringList masked;
-        samples += sensors::maskFlaggedSamples(run, found->second, &masked);
-        for (const QString& channel : masked)
-            if (!channels.contains(channel)) channels << channel;
-    }
+    const auto masked = db::leaveOutFlaggedSamples(
+        *store, parser.value(QStringLiteral("campaign")).toLongLong(), campaign, &error);
+    if (!masked) throw CliError(error);
+    if (!masked->flagged) return;
+    const std::size_t samples = masked->samples;
+    const QStringList& channels = masked->channels;
     endProgressLine();
     std::fprintf(stderr,
                  "flags: %zu samples of %lld channel%s left out (--keep-flagged to use them)\n",

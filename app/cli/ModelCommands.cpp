@@ -6,21 +6,11 @@
 #include "app/cli/FlaggedSamples.h"
 #include "core/models/ModelFactory.h"
 #include "core/models/ModelScore.h"
+#include "core/models/ModelledRuns.h"
+#include "db/ModelFitRecords.h"
 
 namespace driftlab::cli {
 namespace {
-
-/// Runs whose thermal error a model can be fitted to: feed-axis runs, or with
-/// a drift target the runs that log that channel.
-QStringList modelledRuns(const Campaign& campaign, const QString& target) {
-    QStringList ids;
-    for (const Run& run : campaign.runs) {
-        if (target.isEmpty() ? isFeedAxisRun(run.kind) && !run.positioning.empty()
-                             : run.samples.columnIndex(target) >= 0 && !isFeedAxisRun(run.kind))
-            ids << run.id;
-    }
-    return ids;
-}
 
 std::vector<models::RunData> dataset(const Campaign& campaign, const QStringList& runs,
                                      const QString& target) {
@@ -71,7 +61,7 @@ int fitCommand(const QStringList& args) {
     Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
     leaveOutFlaggedSamples(parser, campaign);
     const QString target = parser.value(kTargetOption);
-    const QStringList all = modelledRuns(campaign, target);
+    const QStringList all = models::modelledRuns(campaign, target);
     if (!parser.isSet(train))
         for (const QString& id : all)
             if (!testRuns.contains(id)) {
@@ -88,15 +78,6 @@ int fitCommand(const QStringList& args) {
     printProgress(QStringLiteral("fitting ") + m->name(), 1);
     if (!fit.success) throw CliError(fit.message);
 
-    QJsonObject parameters;
-    for (const auto& [name, p] : fit.parameters)
-        parameters[name] = QJsonObject{{QStringLiteral("value"), jsonNumber(p.value)},
-                                       {QStringLiteral("sigma"), jsonNumber(p.sigma)},
-                                       {QStringLiteral("unit"), p.unit}};
-    QJsonObject metrics;
-    for (const auto& [name, value] : fit.metrics) metrics[name] = jsonNumber(value);
-    metrics[QStringLiteral("train_rms_um")] = jsonNumber(fit.rms_um);
-    metrics[QStringLiteral("iterations")] = fit.iterations;
     // With no run left out (one run, or --test with none) the only score there
     // is comes from the training runs: it is labelled so, and never stands
     // where a script or the database expects a held-out score.
@@ -104,17 +85,13 @@ int fitCommand(const QStringList& args) {
     const QStringList scoredRuns = heldOut ? testRuns : trainRuns;
     const models::Score score = models::scoreModel(*m, dataset(campaign, scoredRuns, target));
     if (!score.ok()) throw CliError(score.error);
-    const QJsonObject figures{
-        {QStringLiteral("rms_um"), jsonNumber(score.rms_um)},
-        {QStringLiteral("peak_um"), jsonNumber(score.peak_um)},
-        {QStringLiteral("reduction"), jsonNumber(score.reduction)},
-        {QStringLiteral("uncompensated_rms_um"), jsonNumber(score.uncompensated_rms_um)}};
-    const QString scoreKind = heldOut ? QStringLiteral("held_out") : QStringLiteral("training");
-    metrics[QStringLiteral("score_kind")] = scoreKind;
-    metrics[heldOut ? QStringLiteral("test") : QStringLiteral("training")] = figures;
-    storeFitIfFromDatabase(
-        parser, {0, m->name(), target.isEmpty() ? QStringLiteral("positioning") : target, trainRuns,
-                 testRuns, parameters, metrics});
+    const db::ModelFitRecord record =
+        db::modelFitRecord(m->name(), target, trainRuns, testRuns, fit, score);
+    const QJsonObject& parameters = record.parameters;
+    const QJsonObject& metrics = record.metrics;
+    const QJsonObject figures = db::scoreJson(score);
+    const QString scoreKind = metrics[QStringLiteral("score_kind")].toString();
+    storeFitIfFromDatabase(parser, record);
 
     if (parser.isSet(QStringLiteral("json"))) {
         QJsonObject scored = figures;
@@ -164,7 +141,7 @@ int compareCommand(const QStringList& args) {
     Campaign campaign = loadCampaignSource(parser);
     leaveOutFlaggedSamples(parser, campaign);
     const QString target = parser.value(kTargetOption);
-    const QStringList runs = modelledRuns(campaign, target);
+    const QStringList runs = models::modelledRuns(campaign, target);
     const auto data = dataset(campaign, runs, target);
     QStringList names = parser.isSet(only) ? runList(parser.value(only)) : models::modelNames();
     // The heat-transfer model predicts the screw; it has nothing to say on a drift channel.

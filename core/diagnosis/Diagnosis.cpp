@@ -133,8 +133,19 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
         return result;
     }
 
+    // Asked between candidates and, through the models' cancel check, inside each fit.
+    double done = 0;
+    bool stopped = false;
+    const auto cancelled = [&] {
+        return stopped = stopped || (options.progress && !options.progress(done));
+    };
     models::HeatTransferModel base;
+    base.setCancelCheck(cancelled);
     result.base_fit = base.fit(train.runs);
+    if (stopped) {
+        result.error = QStringLiteral("diagnosis cancelled");
+        return result;
+    }
     if (!result.base_fit.success) {
         result.error = result.base_fit.message;
         return result;
@@ -147,7 +158,8 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
 
         const auto candidates = candidateEffects(train.runs, base.values());
         for (std::size_t k = 0; k < candidates.size(); ++k) {
-            if (options.progress && !options.progress(double(k) / double(candidates.size()))) {
+            done = double(k) / double(candidates.size());
+            if (cancelled()) {
                 result.error = QStringLiteral("diagnosis cancelled");
                 return result;
             }
@@ -156,7 +168,12 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
             Finding f;
             f.cause = c.cause;
             f.parameter_name = c.parameter.name;
+            model->setCancelCheck(cancelled);
             f.fit = model->fit(train.runs);
+            if (stopped) {
+                result.error = QStringLiteral("diagnosis cancelled");
+                return result;
+            }
             if (!f.fit.success) continue;  // an extension the data cannot carry
             const Evaluation candidateTrain = evaluate(*model, train.runs);
             const Evaluation candidateTest = evaluate(*model, test.runs);

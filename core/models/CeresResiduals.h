@@ -4,6 +4,7 @@
 // from a whole simulation or a whole linear solve, so one block holds them all.
 
 #include <ceres/dynamic_numeric_diff_cost_function.h>
+#include <ceres/iteration_callback.h>
 
 #include <functional>
 
@@ -27,5 +28,18 @@ ceres::CostFunction* numericCost(std::function<bool(const double*, double*)> eva
     cost->SetNumResiduals(residuals);
     return cost;
 }
+
+/// Stops a Ceres solve between iterations when `cancelled` says so (the GUI's
+/// Cancel); the solve then ends with termination type USER_FAILURE.
+class CancelCallback : public ceres::IterationCallback {
+public:
+    explicit CancelCallback(std::function<bool()> cancelled) : cancelled_(std::move(cancelled)) {}
+    ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+        return cancelled_ && cancelled_() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+    }
+
+private:
+    std::function<bool()> cancelled_;
+};
 
 }  // namespace driftlab::models

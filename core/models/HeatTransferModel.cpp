@@ -208,11 +208,16 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     solverOptions.function_tolerance = 1e-10;
     solverOptions.parameter_tolerance = 1e-9;
     solverOptions.logging_type = ceres::SILENT;
+    CancelCallback cancel([this] { return cancelRequested(); });
+    solverOptions.callbacks.push_back(&cancel);
     ceres::Solver::Summary solved;
     const auto started = std::chrono::steady_clock::now();
     ceres::Solve(solverOptions, &problem, &solved);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (cancelRequested())
+        throw ModelError(QStringLiteral("model 'heat-transfer': fit cancelled after %1 iterations")
+                             .arg(solved.iterations.size()));
     if (!solved.IsSolutionUsable())
         throw ModelError(QStringLiteral("model 'heat-transfer': identification failed: %1")
                              .arg(QString::fromStdString(solved.message)));

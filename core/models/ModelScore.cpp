@@ -58,13 +58,23 @@ CrossStateMatrix crossStateMatrix(const QString& modelName, const std::vector<Ru
                              .arg(modelName, modelNames().join(QStringLiteral(", ")));
         return matrix;
     }
+    // Asked between runs and, through the model's cancel check, inside a long fit.
+    double done = 0;
+    bool stopped = false;
+    const auto cancelled = [&] { return stopped = stopped || (progress && !progress(done)); };
     for (std::size_t i = 0; i < runs.size(); ++i) {
-        if (progress && !progress(double(i) / double(runs.size()))) {
+        done = double(i) / double(runs.size());
+        if (cancelled()) {
             matrix.cancelled = true;
             return matrix;
         }
         const std::unique_ptr<ThermalErrorModel> model = makeModel(modelName);
+        model->setCancelCheck(cancelled);
         const FitSummary fit = model->fit({runs[i]});
+        if (stopped) {
+            matrix.cancelled = true;
+            return matrix;
+        }
         if (!fit.success) {
             matrix.errors << QStringLiteral("fit on run '%1': %2").arg(runs[i].run_id, fit.message);
             continue;

@@ -28,6 +28,10 @@ FitSummary ThermalErrorModel::fit(const std::vector<RunData>& training) {
                                           targetName(training.front().target_channel),
                                           targetName(run.target_channel)));
         FitSummary summary = fitRuns(training);
+        // A model that does not look at the flag itself is stopped here at
+        // the latest, so a cancelled fit never counts as a result.
+        if (cancelRequested())
+            throw ModelError(QStringLiteral("model '%1': fit cancelled").arg(name()));
         target_channel_ = training.front().target_channel;
         fitted_ = true;
         double squares = 0;

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <QString>
 #include <QStringList>
+#include <functional>
 #include <limits>
 #include <map>
 #include <vector>
@@ -53,6 +54,11 @@ public:
     /// Fits on the training runs, all from one buildDataset call (same target).
     FitSummary fit(const std::vector<RunData>& training);
     bool isFitted() const { return fitted_; }
+    /// Asked during a long fit (between solver iterations and search steps):
+    /// true stops it, and fit() then fails with "… fit cancelled". The GUI's
+    /// Cancel sets an atomic flag this reads; it is called on the fitting thread.
+    void setCancelCheck(std::function<bool()> cancelled) { cancelled_ = std::move(cancelled); }
+    bool cancelRequested() const { return cancelled_ && cancelled_(); }
 
     /// The thermal error at the run's observation points.
     Prediction predict(const RunData& run) const;
@@ -75,6 +81,7 @@ private:
 
     bool fitted_ = false;
     QString target_channel_;
+    std::function<bool()> cancelled_;
 };
 
 }  // namespace driftlab::models

@@ -9,8 +9,7 @@
 
 namespace driftlab::ui {
 
-bool saveResidualMap(const models::ReadingResiduals& residuals, const QString& path,
-                     const QString& title, QString* error) {
+MapPlot residualMapPlot(const models::ReadingResiduals& residuals, const QString& title) {
     // Pass k ↔ its mean reading time; target ↔ position. Both directions averaged.
     std::map<double, std::map<double, std::pair<double, int>>> byTime;  // pass start → x → (Σ, n)
     std::vector<double> times;
@@ -45,12 +44,17 @@ bool saveResidualMap(const models::ReadingResiduals& residuals, const QString& p
             plot.z.push_back(it == row.end() ? 0.0 : it->second.first / it->second.second);
         }
     }
-    return saveMapPng(plot, path, error);
+    return plot;
 }
 
-bool saveBeforeAfter(const models::RunData& run, const models::ReadingResiduals& base,
-                     const models::ReadingResiduals* adopted, const QString& adoptedName,
-                     const QString& path, const QString& title, QString* error) {
+bool saveResidualMap(const models::ReadingResiduals& residuals, const QString& path,
+                     const QString& title, QString* error) {
+    return saveMapPng(residualMapPlot(residuals, title), path, error);
+}
+
+CurvePlot beforeAfterPlot(const models::RunData& run, const models::ReadingResiduals& base,
+                          const models::ReadingResiduals* adopted, const QString& adoptedName,
+                          const QString& title) {
     double far = -INFINITY;
     for (const auto& p : base.points) far = std::max(far, p.position_mm);
     Curve measured{QStringLiteral("measured"), {}, {}, true};
@@ -76,7 +80,13 @@ bool saveBeforeAfter(const models::RunData& run, const models::ReadingResiduals&
                    QStringLiteral("thermal error at %1 mm (µm)").arg(far, 0, 'f', 0),
                    {measured, before}};
     if (adopted) plot.curves.push_back(after);
-    return saveCurvesPng(plot, path, error);
+    return plot;
+}
+
+bool saveBeforeAfter(const models::RunData& run, const models::ReadingResiduals& base,
+                     const models::ReadingResiduals* adopted, const QString& adoptedName,
+                     const QString& path, const QString& title, QString* error) {
+    return saveCurvesPng(beforeAfterPlot(run, base, adopted, adoptedName, title), path, error);
 }
 
 }  // namespace driftlab::ui

@@ -1,0 +1,86 @@
+#include "db/DiagnosisRecords.h"
+
+#include <QJsonArray>
+
+#include "db/ModelFitRecords.h"
+
+namespace driftlab::db {
+
+QJsonObject findingJson(const diagnosis::Finding& f, const diagnosis::ResidualSummary& before) {
+    return {
+        {QStringLiteral("cause"), f.cause},
+        {QStringLiteral("confidence"), jsonNumber(f.confidence)},
+        {QStringLiteral("significant"), f.significant},
+        {QStringLiteral("parameters"),
+         QJsonObject{{f.parameter_name, jsonNumber(f.parameter.value)}}},
+        {QStringLiteral("sigma"), QJsonObject{{f.parameter_name, jsonNumber(f.parameter.sigma)}}},
+        {QStringLiteral("bic_drop"), jsonNumber(f.bic_drop)},
+        {QStringLiteral("evidence"), f.evidence},
+        {QStringLiteral("gain"),
+         QJsonObject{{QStringLiteral("test_rms_before_um"), jsonNumber(before.error_rms_um)},
+                     {QStringLiteral("test_rms_after_um"), jsonNumber(f.test_after.error_rms_um)},
+                     {QStringLiteral("test_temperature_rms_before_K"),
+                      jsonNumber(before.temperature_rms_K)},
+                     {QStringLiteral("test_temperature_rms_after_K"),
+                      jsonNumber(f.test_after.temperature_rms_K)},
+                     {QStringLiteral("reduction"), jsonNumber(f.reduction)}}}};
+}
+
+QJsonObject diagnosisJson(const diagnosis::DiagnosisResult& r) {
+    QJsonArray findings;
+    for (const auto& f : r.findings) findings << findingJson(f, r.base_test);
+    QJsonObject json{
+        {QStringLiteral("base_model"), kDiagnosisBaseModel},
+        {QStringLiteral("train_runs"), QJsonArray::fromStringList(r.train_runs)},
+        {QStringLiteral("test_runs"), QJsonArray::fromStringList(r.test_runs)},
+        {QStringLiteral("base"),
+         QJsonObject{
+             {QStringLiteral("test_rms_um"), jsonNumber(r.base_test.error_rms_um)},
+             {QStringLiteral("test_peak_um"), jsonNumber(r.base_test.error_peak_um)},
+             {QStringLiteral("test_temperature_rms_K"), jsonNumber(r.base_test.temperature_rms_K)},
+             {QStringLiteral("reading_noise_um"), jsonNumber(r.base_test.error_noise_um)}}},
+        {QStringLiteral("findings"), findings},
+        {QStringLiteral("verdict"), r.verdict}};
+    if (!r.verdict_evidence.isEmpty())
+        json[QStringLiteral("verdict_evidence")] = r.verdict_evidence;
+    return json;
+}
+
+const diagnosis::Finding* verdictFinding(const diagnosis::DiagnosisResult& r) {
+    for (const auto& f : r.findings)
+        if (f.cause == r.verdict) return &f;
+    return nullptr;
+}
+
+ModelFitRecord adoptedExtensionFit(const diagnosis::DiagnosisResult& r,
+                                   const diagnosis::Finding& f) {
+    return {0,
+            QStringLiteral("heat-transfer+") + f.cause,
+            QStringLiteral("positioning"),
+            r.train_runs,
+            r.test_runs,
+            parametersJson(f.fit.parameters),
+            findingJson(f, r.base_test)[QStringLiteral("gain")].toObject()};
+}
+
+std::optional<qint64> adoptExtension(CampaignStore& store, qint64 campaignId,
+                                     const diagnosis::DiagnosisResult& result,
+                                     const diagnosis::Finding& finding,
+                                     std::optional<qint64> diagnosisId, QString* error) {
+    QSqlDatabase& db = store.database();
+    if (!db.transaction()) {
+        *error = QStringLiteral("%1: cannot start a transaction to adopt '%2'")
+                     .arg(store.path(), finding.cause);
+        return std::nullopt;
+    }
+    auto fitId = storeModelFit(store, campaignId, adoptedExtensionFit(result, finding), error);
+    if (fitId && diagnosisId && !setAdoptedFit(store, *diagnosisId, *fitId, error)) fitId.reset();
+    if (!fitId || !db.commit()) {
+        if (fitId) *error = QStringLiteral("%1: cannot commit the adopted fit").arg(store.path());
+        db.rollback();
+        return std::nullopt;
+    }
+    return fitId;
+}
+
+}  // namespace driftlab::db

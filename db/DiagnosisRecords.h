@@ -1,0 +1,42 @@
+#pragma once
+// A diagnosis as the store and scripts keep it: the JSON of `driftlab-cli
+// diagnose --json`, and the model fit an adopted extension is kept as. Shared
+// by the CLI and the GUI's Diagnosis page.
+
+#include <QJsonObject>
+#include <optional>
+
+#include "core/diagnosis/Diagnosis.h"
+#include "db/DiagnosisStore.h"
+#include "db/ModelFitStore.h"
+
+namespace driftlab::db {
+
+/// The base model every diagnosis extends, as stored.
+inline const QString kDiagnosisBaseModel = QStringLiteral("screw-fdm");
+
+/// One finding: cause, confidence, parameter ± σ, ΔBIC, evidence and its gain
+/// on the held-out runs against `before` (the base model's).
+QJsonObject findingJson(const diagnosis::Finding& finding,
+                        const diagnosis::ResidualSummary& before);
+
+/// The whole result: runs, base figures, findings, verdict (and its evidence).
+QJsonObject diagnosisJson(const diagnosis::DiagnosisResult& result);
+
+/// The finding the verdict names, or nullptr (verdict none/unexplained).
+const diagnosis::Finding* verdictFinding(const diagnosis::DiagnosisResult& result);
+
+/// The model fit an adopted extension is kept as: "heat-transfer+CAUSE" on the
+/// diagnosis's runs, its parameters, its held-out gain as metrics.
+ModelFitRecord adoptedExtensionFit(const diagnosis::DiagnosisResult& result,
+                                   const diagnosis::Finding& finding);
+
+/// Stores the extension `finding` as a model fit and returns its id; with
+/// `diagnosisId`, that stored diagnosis records it as its adopted fit. One
+/// transaction; nullopt with `error` (nothing stored then).
+std::optional<qint64> adoptExtension(CampaignStore& store, qint64 campaignId,
+                                     const diagnosis::DiagnosisResult& result,
+                                     const diagnosis::Finding& finding,
+                                     std::optional<qint64> diagnosisId, QString* error);
+
+}  // namespace driftlab::db

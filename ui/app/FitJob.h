@@ -1,0 +1,81 @@
+#pragma once
+// The work behind the Models page, run on a worker thread (BackgroundJob):
+// fit one model and score it per held-out run, or compare every model on the
+// cross-state matrix. Each opens its own store connection (a QSqlDatabase
+// belongs to the thread that opened it) and leaves out the flagged samples as
+// `driftlab-cli fit` does.
+
+#include <QStringList>
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "core/domain/Campaign.h"
+#include "core/models/ModelScore.h"
+#include "ui/app/BackgroundJob.h"
+
+namespace driftlab::ui {
+
+/// The campaign as stored, with its flagged samples left out (and `note`
+/// saying how many); nullopt with `error`.
+std::optional<Campaign> loadCampaignForModels(const QString& storePath, qint64 campaignId,
+                                              QString* note, QString* error);
+
+/// What the model workbench offers for a campaign: the targets ("" = the
+/// positioning error, then the drift channels) and the runs of each.
+struct ModelledRunLists {
+    QString error;
+    QStringList targets;
+    std::map<QString, QStringList> runs;  ///< by target
+};
+
+ModelledRunLists listModelledRuns(const QString& storePath, qint64 campaignId);
+
+struct FitRequest {
+    QString store_path;
+    qint64 campaign_id = 0;
+    QString model;
+    QString target_channel;  ///< empty: the positioning error
+    QStringList train_runs, test_runs;
+};
+
+/// One test run: its measured thermal error and the fitted model's prediction
+/// at the observation points, and its own score.
+struct RunPrediction {
+    QString run_id;
+    std::vector<models::ErrorObservation> observations;
+    std::vector<double> predicted_um;
+    models::Score score;
+};
+
+struct FitOutcome {
+    QString error;  ///< empty on success (and when cancelled)
+    bool cancelled = false;
+    QString note;  ///< e.g. flagged samples left out
+    models::FitSummary fit;
+    models::Score pooled;  ///< over every test run; with none, on the training runs
+    bool held_out = false;
+    std::vector<RunPrediction> runs;  ///< per test run
+    std::optional<qint64> fit_id;     ///< the stored record
+};
+
+/// Fits, scores per test run and stores the fit (db::storeModelFit) unless
+/// cancelled. Cancel stops the fit between solver iterations.
+FitOutcome runFit(const FitRequest& request, JobControl& control);
+
+struct CompareOutcome {
+    QString error;
+    bool cancelled = false;
+    QString note;
+    QStringList runs;
+    /// Per model, in models::modelNames() order: rms_um[i][j].
+    std::vector<std::pair<QString, models::CrossStateMatrix>> matrices;
+};
+
+/// The cross-state matrix of every model, as `driftlab-cli compare`
+/// (heat-transfer is left out for a drift target).
+CompareOutcome runCompare(const QString& storePath, qint64 campaignId, const QString& target,
+                          JobControl& control);
+
+}  // namespace driftlab::ui
