@@ -4,12 +4,14 @@
 //   driftlab [STORE]          open a store (else the last one)
 //   driftlab --demo           open the demo store, set up with the simulated rig
 //   driftlab --screenshots DIR   save every page as DIR/gui-<page>.png, then quit
+//   driftlab --demo --autopilot  play the demo through the window: run, fit, compare, diagnose
 #include <QAbstractButton>
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QMessageBox>
 #include <QSettings>
 
+#include "app/gui/DemoAutopilot.h"
 #include "app/gui/ScreenshotTour.h"
 #include "ui/app/MainWindow.h"
 
@@ -30,6 +32,11 @@ int main(int argc, char** argv) {
         QStringLiteral("screenshots"),
         QStringLiteral("Save every page as DIR/gui-<page>.png, then quit."), QStringLiteral("DIR")};
     parser.addOption(screenshots);
+    const QCommandLineOption autopilot{
+        QStringLiteral("autopilot"),
+        QStringLiteral("With --demo: run, fit, compare and diagnose through the window (at "
+                       "speed-up 0), then the screenshots if asked.")};
+    parser.addOption(autopilot);
     parser.addPositionalArgument(QStringLiteral("STORE"),
                                  QStringLiteral("Campaign store to open."));
     parser.process(app);
@@ -62,7 +69,13 @@ int main(int argc, char** argv) {
                !last.isEmpty()) {
         window.openStore(last, false, false);
     }
-    if (parser.isSet(screenshots))
-        driftlab::gui::startScreenshotTour(window, parser.value(screenshots), 1500);
+    auto tour = [&window, &parser, &screenshots] {
+        if (parser.isSet(screenshots))
+            driftlab::gui::startScreenshotTour(window, parser.value(screenshots), 500);
+    };
+    if (parser.isSet(autopilot) && parser.isSet(demo))
+        driftlab::gui::startDemoAutopilot(window, 0, tour);
+    else
+        tour();
     return app.exec();
 }
