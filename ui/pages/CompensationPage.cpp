@@ -182,16 +182,7 @@ void CompensationPage::onLoaded() {
     if (!loaded.campaign) return showError(tr("Loading the campaign: %1").arg(loaded.error));
     m_campaign = std::move(loaded.campaign);
     m_controller->setHistory(std::move(loaded.pushes));
-    const QString previous = m_run->currentText();
-    const QStringList runs = iso::runsWithPositioning(*m_campaign);
-    {
-        const QSignalBlocker block(m_run);
-        m_run->clear();
-        m_run->addItems(runs);
-        const QString wanted =
-            runs.contains(previous) ? previous : iso::defaultPositioningRun(*m_campaign).id;
-        m_run->setCurrentIndex(wanted.isEmpty() ? 0 : int(runs.indexOf(wanted)));
-    }
+    fillPositioningRunBox(m_run, *m_campaign);
     rebuild();
 }
 

@@ -21,24 +21,9 @@
 #include "ui/models/StoredDiagnosesModel.h"
 #include "ui/plots/DiagnosisPlots.h"
 #include "ui/widgets/PlotView.h"
+#include "ui/widgets/ResultTableView.h"
 
 namespace driftlab::ui {
-namespace {
-
-QTableView* tableView(QAbstractItemModel* model, QWidget* parent) {
-    auto* view = new QTableView(parent);
-    view->setModel(model);
-    view->verticalHeader()->setVisible(false);
-    view->horizontalHeader()->setStretchLastSection(true);
-    view->setSelectionBehavior(QAbstractItemView::SelectRows);
-    view->setSelectionMode(QAbstractItemView::SingleSelection);
-    view->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    view->setWordWrap(false);
-    return view;
-}
-
-}  // namespace
-
 DiagnosisPage::DiagnosisPage(Session& session, QWidget* parent)
     : QWidget(parent), m_session(session), m_job(new BackgroundJob(this)) {
     m_diagnose = new QPushButton(tr("&Diagnose"), this);
@@ -55,12 +40,12 @@ DiagnosisPage::DiagnosisPage(Session& session, QWidget* parent)
     m_verdict->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
     m_findings = new FindingsModel(this);
-    m_findingsView = tableView(m_findings, this);
+    m_findingsView = resultTableView(m_findings, this);
     m_findingsView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_adopt = new QPushButton(tr("&Adopt the selected extension"), this);
     m_adopt->setToolTip(tr("Keep the extended model as a model fit of the campaign"));
     m_stored = new StoredDiagnosesModel(this);
-    auto* storedView = tableView(m_stored, this);
+    auto* storedView = resultTableView(m_stored, this);
 
     m_run = new QComboBox(this);
     m_map = new PlotView(this);

@@ -166,16 +166,7 @@ void Iso230_2Page::onLoaded() {
     }
     if (!loaded.campaign) return showError(tr("Loading the campaign: %1").arg(loaded.error));
     m_campaign = std::move(loaded.campaign);
-    const QString previous = m_run->currentText();
-    const QStringList runs = iso::runsWithPositioning(*m_campaign);
-    {
-        const QSignalBlocker block(m_run);
-        m_run->clear();
-        m_run->addItems(runs);
-        const QString wanted =
-            runs.contains(previous) ? previous : iso::defaultPositioningRun(*m_campaign).id;
-        m_run->setCurrentIndex(wanted.isEmpty() ? 0 : int(runs.indexOf(wanted)));
-    }
+    fillPositioningRunBox(m_run, *m_campaign);
     evaluateRun();
 }
 

@@ -21,22 +21,9 @@
 #include "ui/models/TestScoresModel.h"
 #include "ui/widgets/FitSetupPanel.h"
 #include "ui/widgets/PredictionPlotWidget.h"
+#include "ui/widgets/ResultTableView.h"
 
 namespace driftlab::ui {
-namespace {
-
-QTableView* tableView(QAbstractItemModel* model, QWidget* parent) {
-    auto* view = new QTableView(parent);
-    view->setModel(model);
-    view->verticalHeader()->setVisible(false);
-    view->horizontalHeader()->setStretchLastSection(true);
-    view->setSelectionBehavior(QAbstractItemView::SelectRows);
-    view->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    return view;
-}
-
-}  // namespace
-
 ModelsPage::ModelsPage(Session& session, QWidget* parent)
     : QWidget(parent), m_session(session), m_job(new BackgroundJob(this)) {
     m_setup = new FitSetupPanel(this);
@@ -99,8 +86,8 @@ QWidget* ModelsPage::buildFitTab() {
     m_parameters = new ModelParametersModel(this);
     m_scores = new TestScoresModel(this);
     auto* split = new QSplitter(Qt::Vertical, tab);
-    split->addWidget(tableView(m_parameters, split));
-    split->addWidget(tableView(m_scores, split));
+    split->addWidget(resultTableView(m_parameters, split));
+    split->addWidget(resultTableView(m_scores, split));
     auto* layout = new QVBoxLayout(tab);
     layout->addWidget(m_fitSummary);
     layout->addWidget(split, 1);
@@ -111,7 +98,7 @@ QWidget* ModelsPage::buildFitTab() {
 QWidget* ModelsPage::buildMatrixTab() {
     auto* tab = new QWidget(this);
     m_matrix = new CrossStateMatrixModel(this);
-    m_matrixView = tableView(m_matrix, tab);
+    m_matrixView = resultTableView(m_matrix, tab);
     m_matrixView->verticalHeader()->setVisible(true);
     m_matrixView->horizontalHeader()->setStretchLastSection(false);
     m_matrixView->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);

@@ -1,5 +1,11 @@
 #include "ui/widgets/CampaignLoad.h"
 
+#include "core/iso/PositioningRuns.h"
+
+#include <QSignalBlocker>
+
+#include <QComboBox>
+
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "db/CampaignStore.h"
@@ -26,6 +32,17 @@ QFuture<LoadedCampaign> loadCampaignInBackground(const QString& storePath, qint6
         if (loaded.campaign && withPushes) loaded.pushes = campaignPushes(storePath, campaignId);
         return loaded;
     });
+}
+
+void fillPositioningRunBox(QComboBox* box, const Campaign& campaign) {
+    const QString previous = box->currentText();
+    const QStringList runs = iso::runsWithPositioning(campaign);
+    const QSignalBlocker block(box);
+    box->clear();
+    box->addItems(runs);
+    const QString wanted =
+        runs.contains(previous) ? previous : iso::defaultPositioningRun(campaign).id;
+    box->setCurrentIndex(wanted.isEmpty() ? 0 : int(runs.indexOf(wanted)));
 }
 
 }  // namespace driftlab::ui

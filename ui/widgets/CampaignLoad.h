@@ -11,6 +11,8 @@
 #include "core/domain/Campaign.h"
 #include "db/PushHistory.h"
 
+class QComboBox;
+
 namespace driftlab::ui {
 
 struct LoadedCampaign {
@@ -27,6 +29,11 @@ QFuture<LoadedCampaign> loadCampaignInBackground(const QString& storePath, qint6
 
 /// The push history of one campaign, read on the calling thread with its own
 /// connection; empty when the store has none yet.
+/// Fills `box` with the runs of `campaign` that have positioning readings,
+/// keeping the run it showed when it is still there, else the default one
+/// (iso::defaultPositioningRun); without emitting its signals.
+void fillPositioningRunBox(QComboBox* box, const Campaign& campaign);
+
 std::vector<db::PushRecord> campaignPushes(const QString& storePath, qint64 campaignId);
 
 }  // namespace driftlab::ui
