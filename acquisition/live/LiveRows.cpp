@@ -51,8 +51,11 @@ LiveSummary summarize(const LiveRows& rows, int column, double from_s, double to
         if (t1_s < from_s || t0_s > to_s) continue;
         const bool whole = first == 0 && end == LiveChunk::kCapacityRows && chunk->sealed();
         if (whole && t0_s >= from_s && t1_s <= to_s) {
-            const int b = bucketOf(t0_s, from_s, to_s, buckets);
-            if (b == bucketOf(t1_s, from_s, to_s, buckets)) {
+            // In one bucket when its first time is not before the bucket of its
+            // last one; a caller that puts edges on chunk starts computes them
+            // with rounding, so an edge a hair above the first time still counts.
+            const int b = bucketOf(t1_s, from_s, to_s, buckets);
+            if (t0_s >= from_s + b * width_s - 1e-9 * width_s) {
                 summary.buckets[b].range.merge(chunk->range(column));
                 ++summary.chunks_from_summaries;
                 continue;

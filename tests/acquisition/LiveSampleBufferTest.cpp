@@ -167,6 +167,26 @@ TEST(LiveSampleBuffer, plotBucketsMatchBruteForceAndUseTheChunkSummaries) {
     EXPECT_TRUE(buffer.summary(9, t0, t1, 5).buckets.empty());
 }
 
+TEST(LiveSampleBuffer, bucketsOnChunkStartsComputedWithRoundingStillUseEverySummary) {
+    // A 10 Hz log (0.1 s is not a binary fraction) and buckets of three chunks
+    // whose edges are derived from the data as the dashboard derives them.
+    // Rounding puts some edges a hair above a chunk's first time; every whole
+    // chunk must still come from its summary (the redraw time depends on it).
+    LiveSampleBuffer buffer(columnNames(2));
+    constexpr int kChunks = 60, kRows = kChunks * kCap;
+    for (int r = 0; r < kRows; ++r) {
+        const double values[] = {std::sin(r * 0.01), double(r % 7)};
+        ASSERT_TRUE(buffer.append(r * 0.1, values, nullptr));
+    }
+    const double from_s = 0, last_s = (kRows - 1) * 0.1;
+    const double width_s = 3 * (last_s - from_s) / double(kRows - 1) * kCap;
+    const int buckets = int(std::ceil((last_s - from_s) / width_s));
+    const live::LiveSummary s = buffer.summary(0, from_s, from_s + buckets * width_s, buckets);
+    ASSERT_EQ(buckets, kChunks / 3);
+    EXPECT_EQ(s.chunks_from_summaries, kChunks);  // 51 before edges got their tolerance
+    for (const live::LiveBucket& b : s.buckets) EXPECT_EQ(b.range.present, 3 * kCap);
+}
+
 TEST(LiveSampleBuffer, latestIsTheLastPresentValueOfTheColumn) {
     LiveSampleBuffer buffer(columnNames(3));
     EXPECT_FALSE(buffer.latest(0).has_value());
