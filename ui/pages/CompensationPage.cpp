@@ -16,6 +16,7 @@
 
 #include "core/iso/Iso230_2.h"
 #include "core/iso/PositioningRuns.h"
+#include "ui/app/SelectedCampaignLoader.h"
 #include "ui/app/Session.h"
 #include "ui/models/CompensationTableModel.h"
 #include "ui/widgets/CompensationPlot.h"
@@ -132,19 +133,16 @@ CompensationPage::CompensationPage(Session& session, QWidget* parent)
                                      tr("table exported to %1").arg(path));
             });
     connect(m_export, &TableExportPanel::exportFailed, this, &CompensationPage::showError);
-    connect(&m_loading, &QFutureWatcher<LoadedCampaign>::finished, this,
-            &CompensationPage::onLoaded);
-    connect(&m_session, &Session::campaignSelected, this, [this] {
-        m_model->clear();
-        reload();
-    });
-    connect(&m_session, &Session::storeContentChanged, this, &CompensationPage::reload);
-    reload();
+    m_loader = new SelectedCampaignLoader(m_session, true, this);
+    connect(&m_session, &Session::campaignSelected, this, [this] { m_model->clear(); });
+    connect(m_loader, &SelectedCampaignLoader::cleared, this, &CompensationPage::clearCampaign);
+    connect(m_loader, &SelectedCampaignLoader::loadingStarted, this,
+            [this] { m_message->setText(tr("loading the campaign…")); });
+    connect(m_loader, &SelectedCampaignLoader::loaded, this, &CompensationPage::onLoaded);
+    m_loader->reload();
 }
 
-CompensationPage::~CompensationPage() {
-    m_loading.waitForFinished();
-}
+CompensationPage::~CompensationPage() = default;
 
 void CompensationPage::showError(const QString& message) {
     m_message->setText(
@@ -152,36 +150,21 @@ void CompensationPage::showError(const QString& message) {
     emit m_session.event(QStringLiteral("error"), kSource, message);
 }
 
-void CompensationPage::reload() {
-    if (m_loading.isRunning()) {
-        m_reloadAgain = true;  // the campaign changed while it loaded
-        return;
-    }
-    const auto id = m_session.campaignId();
-    if (m_session.storePath().isEmpty() || !id) {
-        m_campaign.reset();
-        m_run->clear();
-        m_model->clear();
-        m_plot->clear();
-        m_export->setTable(std::nullopt, {});
-        m_controller->setTable(std::nullopt, {});
-        m_controller->setHistory({});
-        m_message->setText(tr("Select a campaign with a positioning run in the campaign tree."));
-        return;
-    }
-    m_message->setText(tr("loading the campaign…"));
-    m_loading.setFuture(loadCampaignInBackground(m_session.storePath(), *id, true));
+void CompensationPage::clearCampaign() {
+    m_campaign.reset();
+    m_run->clear();
+    m_model->clear();
+    m_plot->clear();
+    m_export->setTable(std::nullopt, {});
+    m_controller->setTable(std::nullopt, {});
+    m_controller->setHistory({});
+    m_message->setText(tr("Select a campaign with a positioning run in the campaign tree."));
 }
 
-void CompensationPage::onLoaded() {
-    LoadedCampaign loaded = m_loading.result();
-    if (m_reloadAgain) {
-        m_reloadAgain = false;
-        return reload();
-    }
+void CompensationPage::onLoaded(const LoadedCampaign& loaded) {
     if (!loaded.campaign) return showError(tr("Loading the campaign: %1").arg(loaded.error));
-    m_campaign = std::move(loaded.campaign);
-    m_controller->setHistory(std::move(loaded.pushes));
+    m_campaign = loaded.campaign;
+    m_controller->setHistory(loaded.pushes);
     fillPositioningRunBox(m_run, *m_campaign);
     rebuild();
 }

@@ -5,7 +5,6 @@
 // difference to the controller's active table, export to every table format,
 // and the push with its confirmation and history (ControllerPanel).
 
-#include <QFutureWatcher>
 #include <QWidget>
 #include <optional>
 
@@ -23,6 +22,8 @@ class QSpinBox;
 class QTableView;
 
 namespace driftlab::ui {
+
+class SelectedCampaignLoader;
 
 class CompensationPlot;
 class CompensationTableModel;
@@ -55,8 +56,8 @@ signals:
     void tableUpdated();
 
 private:
-    void reload();
-    void onLoaded();
+    void clearCampaign();
+    void onLoaded(const LoadedCampaign& loaded);
     void rebuild();
     void showError(const QString& message);
 
@@ -75,8 +76,7 @@ private:
     CompensationPlot* m_plot;
     TableExportPanel* m_export;
     ControllerPanel* m_controller;
-    QFutureWatcher<LoadedCampaign> m_loading;
-    bool m_reloadAgain = false;
+    SelectedCampaignLoader* m_loader;
     std::optional<Campaign> m_campaign;
 };
 

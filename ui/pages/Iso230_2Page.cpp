@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "core/iso/PositioningRuns.h"
+#include "ui/app/SelectedCampaignLoader.h"
 #include "ui/app/Session.h"
 #include "ui/models/Iso230_2TargetModel.h"
 #include "ui/widgets/Iso230_2Plot.h"
@@ -120,15 +121,19 @@ Iso230_2Page::Iso230_2Page(Session& session, QWidget* parent)
     connect(m_run, &QComboBox::currentIndexChanged, this, &Iso230_2Page::evaluateRun);
     connect(m_edition, &QComboBox::currentIndexChanged, this, &Iso230_2Page::evaluateRun);
     connect(m_coverage, &QDoubleSpinBox::valueChanged, this, &Iso230_2Page::evaluateRun);
-    connect(&m_loading, &QFutureWatcher<LoadedCampaign>::finished, this, &Iso230_2Page::onLoaded);
-    connect(&m_session, &Session::campaignSelected, this, &Iso230_2Page::reload);
-    connect(&m_session, &Session::storeContentChanged, this, &Iso230_2Page::reload);
-    reload();
+    m_loader = new SelectedCampaignLoader(m_session, false, this);
+    connect(m_loader, &SelectedCampaignLoader::cleared, this, [this] {
+        m_campaign.reset();
+        m_run->clear();
+        m_message->setText(tr("Select a campaign with a positioning run in the campaign tree."));
+    });
+    connect(m_loader, &SelectedCampaignLoader::loadingStarted, this,
+            [this] { m_message->setText(tr("loading the campaign…")); });
+    connect(m_loader, &SelectedCampaignLoader::loaded, this, &Iso230_2Page::onLoaded);
+    m_loader->reload();
 }
 
-Iso230_2Page::~Iso230_2Page() {
-    m_loading.waitForFinished();
-}
+Iso230_2Page::~Iso230_2Page() = default;
 
 QString Iso230_2Page::figureText(const QString& key) const {
     for (const auto& [name, label] : m_figureLabels)
@@ -142,30 +147,9 @@ void Iso230_2Page::showError(const QString& message) {
     emit m_session.event(QStringLiteral("error"), kSource, message);
 }
 
-void Iso230_2Page::reload() {
-    if (m_loading.isRunning()) {
-        m_reloadAgain = true;
-        return;
-    }
-    const auto id = m_session.campaignId();
-    if (m_session.storePath().isEmpty() || !id) {
-        m_campaign.reset();
-        m_run->clear();
-        m_message->setText(tr("Select a campaign with a positioning run in the campaign tree."));
-        return;
-    }
-    m_message->setText(tr("loading the campaign…"));
-    m_loading.setFuture(loadCampaignInBackground(m_session.storePath(), *id, false));
-}
-
-void Iso230_2Page::onLoaded() {
-    LoadedCampaign loaded = m_loading.result();
-    if (m_reloadAgain) {
-        m_reloadAgain = false;
-        return reload();
-    }
+void Iso230_2Page::onLoaded(const LoadedCampaign& loaded) {
     if (!loaded.campaign) return showError(tr("Loading the campaign: %1").arg(loaded.error));
-    m_campaign = std::move(loaded.campaign);
+    m_campaign = loaded.campaign;
     fillPositioningRunBox(m_run, *m_campaign);
     evaluateRun();
 }

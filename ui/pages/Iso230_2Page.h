@@ -4,7 +4,6 @@
 // per-target table, the axis figures and the mean ± k·s plot for both
 // directions, with the evaluation's warnings.
 
-#include <QFutureWatcher>
 #include <QWidget>
 #include <optional>
 
@@ -19,6 +18,8 @@ class QLabel;
 class QTableView;
 
 namespace driftlab::ui {
+
+class SelectedCampaignLoader;
 
 class Iso230_2Plot;
 class Iso230_2TargetModel;
@@ -46,8 +47,7 @@ signals:
     void evaluated();
 
 private:
-    void reload();
-    void onLoaded();
+    void onLoaded(const LoadedCampaign& loaded);
     void evaluateRun();
     void showError(const QString& message);
 
@@ -62,8 +62,7 @@ private:
     Iso230_2Plot* m_plot;
     QGridLayout* m_figures;
     std::vector<std::pair<QString, QLabel*>> m_figureLabels;
-    QFutureWatcher<LoadedCampaign> m_loading;
-    bool m_reloadAgain = false;
+    SelectedCampaignLoader* m_loader;
     std::optional<Campaign> m_campaign;
     std::optional<iso::Evaluation> m_evaluation;
 };

@@ -27,13 +27,13 @@ struct LoadedCampaign {
 QFuture<LoadedCampaign> loadCampaignInBackground(const QString& storePath, qint64 campaignId,
                                                  bool withPushes);
 
-/// The push history of one campaign, read on the calling thread with its own
-/// connection; empty when the store has none yet.
 /// Fills `box` with the runs of `campaign` that have positioning readings,
 /// keeping the run it showed when it is still there, else the default one
 /// (iso::defaultPositioningRun); without emitting its signals.
 void fillPositioningRunBox(QComboBox* box, const Campaign& campaign);
 
+/// The push history of one campaign, read on the calling thread with its own
+/// connection; empty when the store has none yet.
 std::vector<db::PushRecord> campaignPushes(const QString& storePath, qint64 campaignId);
 
 }  // namespace driftlab::ui
