@@ -82,14 +82,13 @@ std::optional<PolledReading> ControllerLink::poll(QString* error) {
 
 ControllerDevice::ControllerDevice(modbus::ModbusUrl url, DeviceWorkerOptions options,
                                    QObject* parent)
-    : QObject(parent),
-      m_thread(
+    : DeviceFacade(
           [url, timeout_s = options.response_timeout_s] {
               return std::make_unique<ControllerLink>(url, timeout_s);
           },
-          QStringLiteral("controller %1").arg(url.endpoint()), options, this) {
+          QStringLiteral("controller %1").arg(url.endpoint()), options, parent) {
     qRegisterMetaType<ControllerReading>();
-    forwardDeviceSignals<ControllerReading>(&m_thread, this);
+    forwardReadings<ControllerReading>(this);
 }
 
 }  // namespace driftlab::devices

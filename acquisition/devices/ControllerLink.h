@@ -13,7 +13,7 @@
 #include <optional>
 
 #include "acquisition/devices/AxisStateRegisters.h"
-#include "acquisition/devices/DeviceThread.h"
+#include "acquisition/devices/DeviceFacade.h"
 #include "acquisition/devices/PolledDevice.h"
 #include "acquisition/modbus/ModbusUrl.h"
 #include "core/domain/MachineState.h"
@@ -60,27 +60,14 @@ private:
 
 /// A controller link polled on its own thread (DeviceThread): readings,
 /// one error per connect cycle, gaps and health as queued signals.
-class ControllerDevice : public QObject {
+class ControllerDevice : public DeviceFacade {
     Q_OBJECT
 public:
     explicit ControllerDevice(modbus::ModbusUrl url, DeviceWorkerOptions options = {},
                               QObject* parent = nullptr);
 
-    void start() { m_thread.start(); }
-    bool stopAndWait(int timeout_ms = DeviceThread::kDefaultStopTimeoutMs) {
-        return m_thread.stopAndWait(timeout_ms);
-    }
-    bool isRunning() const { return m_thread.isRunning(); }
-
 signals:
     void readingReady(const driftlab::devices::ControllerReading& reading);
-    void errorOccurred(const QString& message);
-    void gap(const QDateTime& from_utc, const QDateTime& to_utc);
-    void healthChanged(driftlab::devices::DeviceHealth health);
-    void attemptFailed(int attempt, double next_retry_s);
-
-private:
-    DeviceThread m_thread;
 };
 
 }  // namespace driftlab::devices

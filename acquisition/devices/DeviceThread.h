@@ -2,8 +2,8 @@
 // The thread a polled device runs on: owns the QThread and its DeviceWorker,
 // starts it once and stops it within a bound. Its signals arrive on the
 // thread that created it (queued from the worker). The typed facades
-// (TemperatureDevice, ControllerDevice) hold one and forward its signals with
-// the reading unpacked from its QVariant (forwardDeviceSignals).
+// (DeviceFacade) hold one and forward its signals with the reading unpacked
+// from its QVariant.
 
 #include <QObject>
 #include <QVariant>
@@ -47,19 +47,5 @@ private:
     DeviceWorker* m_worker = nullptr;
     bool m_started = false;
 };
-
-/// Connects `thread`'s signals to the same-named signals of `facade`, the
-/// reading as `Reading`. Both live on one thread, so these are direct; the
-/// thread crossing is DeviceThread's queued connection to its worker.
-template <class Reading, class Facade>
-void forwardDeviceSignals(DeviceThread* thread, Facade* facade) {
-    QObject::connect(
-        thread, &DeviceThread::readingReady, facade,
-        [facade](const QVariant& reading) { emit facade->readingReady(reading.value<Reading>()); });
-    QObject::connect(thread, &DeviceThread::errorOccurred, facade, &Facade::errorOccurred);
-    QObject::connect(thread, &DeviceThread::gap, facade, &Facade::gap);
-    QObject::connect(thread, &DeviceThread::healthChanged, facade, &Facade::healthChanged);
-    QObject::connect(thread, &DeviceThread::attemptFailed, facade, &Facade::attemptFailed);
-}
 
 }  // namespace driftlab::devices

@@ -55,18 +55,17 @@ private:
 
 InterferometerDevice::InterferometerDevice(InterferometerStreamOptions stream,
                                            DeviceWorkerOptions options, QObject* parent)
-    : QObject(parent),
-      m_thread([stream] { return std::make_unique<InterferometerLink>(stream); },
-               QStringLiteral("interferometer %1:%2").arg(stream.host).arg(stream.port),
-               [options] {
-                   // The read slice paces the stream; the worker polls again at once.
-                   DeviceWorkerOptions o = options;
-                   o.poll_interval_s = 0;
-                   return o;
-               }(),
-               this) {
+    : DeviceFacade([stream] { return std::make_unique<InterferometerLink>(stream); },
+                   QStringLiteral("interferometer %1:%2").arg(stream.host).arg(stream.port),
+                   [options] {
+                       // The read slice paces the stream; the worker polls again at once.
+                       DeviceWorkerOptions o = options;
+                       o.poll_interval_s = 0;
+                       return o;
+                   }(),
+                   parent) {
     qRegisterMetaType<InterferometerBatch>();
-    forwardDeviceSignals<InterferometerBatch>(&m_thread, this);
+    forwardReadings<InterferometerBatch>(this);
 }
 
 }  // namespace driftlab::devices

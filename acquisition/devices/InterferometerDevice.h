@@ -9,7 +9,7 @@
 #include <QObject>
 #include <vector>
 
-#include "acquisition/devices/DeviceThread.h"
+#include "acquisition/devices/DeviceFacade.h"
 #include "acquisition/devices/InterferometerConnection.h"
 
 namespace driftlab::devices {
@@ -24,7 +24,7 @@ struct InterferometerBatch {
     std::vector<TimedInterferometerReading> readings;
 };
 
-class InterferometerDevice : public QObject {
+class InterferometerDevice : public DeviceFacade {
     Q_OBJECT
 public:
     /// Longest a read blocks the worker: bounds the stop.
@@ -33,21 +33,8 @@ public:
     explicit InterferometerDevice(InterferometerStreamOptions stream,
                                   DeviceWorkerOptions options = {}, QObject* parent = nullptr);
 
-    void start() { m_thread.start(); }
-    bool stopAndWait(int timeout_ms = DeviceThread::kDefaultStopTimeoutMs) {
-        return m_thread.stopAndWait(timeout_ms);
-    }
-    bool isRunning() const { return m_thread.isRunning(); }
-
 signals:
     void readingReady(const driftlab::devices::InterferometerBatch& batch);
-    void errorOccurred(const QString& message);
-    void gap(const QDateTime& from_utc, const QDateTime& to_utc);
-    void healthChanged(driftlab::devices::DeviceHealth health);
-    void attemptFailed(int attempt, double next_retry_s);
-
-private:
-    DeviceThread m_thread;
 };
 
 }  // namespace driftlab::devices
