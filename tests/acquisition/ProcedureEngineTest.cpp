@@ -17,22 +17,12 @@
 #include "core/rig/CampaignSimulator.h"
 #include "db/CampaignStore.h"
 #include "db/RunLogger.h"
+#include "tests/acquisition/LoggedRunSupport.h"
 
 using namespace driftlab;
 using namespace std::chrono_literals;
 
 namespace {
-
-procedures::Procedure twoMovingStates() {
-    procedures::Procedure p;
-    p.name = QStringLiteral("two short moving states");
-    p.kind = procedures::ProcedureKind::MovingStates;
-    procedures::MovingStatesSpec m;
-    m.states = {{QStringLiteral("S1"), 8000, {210, 490}, 1800, 1200},
-                {QStringLiteral("S2"), 4000, {70, 630}, 1200, 600}};
-    p.moving_states = m;
-    return p;
-}
 
 /// The rig the batch simulator runs for the same states.
 rig::RigSpec rigFor(const procedures::Procedure& p) {
@@ -71,21 +61,11 @@ void expectSameRuns(const Campaign& logged, const Campaign& batch) {
     }
 }
 
-QStringList runStatuses(const QString& path) {
-    QString error;
-    auto store = db::CampaignStore::open(path, db::StoreAccess::ReadOnly, &error);
-    QSqlQuery q(store->database());
-    q.exec(QStringLiteral("SELECT name || '=' || status FROM run ORDER BY id"));
-    QStringList out;
-    while (q.next()) out << q.value(0).toString();
-    return out;
-}
-
 }  // namespace
 
 TEST(ProcedureEngine, LoggedCampaignIsTheBatchSimulationSampleForSample) {
     QTemporaryDir dir;
-    const auto procedure = twoMovingStates();
+    const auto procedure = test::twoShortMovingStates();
     engine::SimulatedRig rig(rigFor(procedure));
     engine::ProcedureEngine engine(procedure, rig, storeAt(dir.filePath("lab.sqlite")));
     QString error;
@@ -94,12 +74,13 @@ TEST(ProcedureEngine, LoggedCampaignIsTheBatchSimulationSampleForSample) {
     EXPECT_EQ(engine.state(), engine::EngineState::Finished);
     expectSameRuns(loadOnly(dir.filePath("lab.sqlite"), *id),
                    rig::simulateCampaign(rigFor(procedure)));
-    EXPECT_EQ(runStatuses(dir.filePath("lab.sqlite")), QStringList({"S1=complete", "S2=complete"}));
+    EXPECT_EQ(test::runStatuses(dir.filePath("lab.sqlite")),
+              QStringList({"S1=complete", "S2=complete"}));
 }
 
 TEST(ProcedureEngine, PauseAndResumeAtRandomPointsLoseNothing) {
     QTemporaryDir dir;
-    const auto procedure = twoMovingStates();
+    const auto procedure = test::twoShortMovingStates();
     engine::SimulatedRig rig(rigFor(procedure));
     engine::EngineOptions options = storeAt(dir.filePath("lab.sqlite"));
     options.speedup = 4000;  // 5 h of runs in about 4.5 s
@@ -130,7 +111,7 @@ TEST(ProcedureEngine, AbortedRunResumedIsTheRunNeverAborted) {
         SCOPED_TRACE(trial);
         QTemporaryDir dir;
         const QString path = dir.filePath("lab.sqlite");
-        const auto procedure = twoMovingStates();
+        const auto procedure = test::twoShortMovingStates();
         engine::SimulatedRig rig(rigFor(procedure));
         engine::EngineOptions options = storeAt(path);
         options.speedup = 4000;
@@ -143,7 +124,7 @@ TEST(ProcedureEngine, AbortedRunResumedIsTheRunNeverAborted) {
         worker.join();
         ASSERT_TRUE(id) << error.toStdString();
         EXPECT_EQ(first.state(), engine::EngineState::Interrupted);
-        const QStringList statuses = runStatuses(path);
+        const QStringList statuses = test::runStatuses(path);
         ASSERT_FALSE(statuses.isEmpty());
         EXPECT_TRUE(statuses.last().endsWith(QLatin1String("=interrupted")))
             << statuses.join(' ').toStdString();
@@ -169,7 +150,7 @@ TEST(ProcedureEngine, AbortedRunResumedIsTheRunNeverAborted) {
 TEST(ProcedureEngine, ResumeRefusesACompleteRunAndAForeignOne) {
     QTemporaryDir dir;
     const QString path = dir.filePath("lab.sqlite");
-    const auto procedure = twoMovingStates();
+    const auto procedure = test::twoShortMovingStates();
     engine::SimulatedRig rig(rigFor(procedure));
     QString error;
     ASSERT_TRUE(engine::ProcedureEngine(procedure, rig, storeAt(path)).run(&error));
@@ -193,7 +174,7 @@ TEST(ProcedureEngine, Iso230_3WarmupEndsWhenTheCriterionHolds) {
     t.max_warmup_s = 6 * 3600;
     t.cooldown_s = 1800;
     p.thermal_distortion = t;
-    engine::SimulatedRig rig(rigFor(twoMovingStates()));
+    engine::SimulatedRig rig(rigFor(test::twoShortMovingStates()));
     QString error;
     const auto id = engine::ProcedureEngine(p, rig, storeAt(path)).run(&error);
     ASSERT_TRUE(id) << error.toStdString();
@@ -218,7 +199,7 @@ TEST(ProcedureEngine, Iso230_3WarmupEndsWhenTheCriterionHolds) {
 
 TEST(ProcedureEngine, LiveReadPathSeesEveryLoggedRowWhileTheRunGoesOn) {
     QTemporaryDir dir;
-    auto procedure = twoMovingStates();
+    auto procedure = test::twoShortMovingStates();
     procedure.moving_states->states.resize(1);
     const rig::RigSpec spec = rigFor(procedure);
     const auto columns = rig::rigCampaignHeader(spec, false).sample_columns;
