@@ -24,8 +24,10 @@ extern "C" void requestStop(int) {
 int runCommand(const QStringList& args) {
     QCommandLineParser parser;
     const QCommandLineOption procedure{QStringLiteral("procedure"),
-                                       QStringLiteral("Procedure file (JSON, see "
-                                                      "resources/procedures/)."),
+                                       QStringLiteral("Procedure file (JSON; shipped ones in "
+                                                      "/usr/share/driftlab/procedures/ when "
+                                                      "installed, resources/procedures/ in the "
+                                                      "source)."),
                                        QStringLiteral("FILE")};
     const QCommandLineOption rigOption{
         QStringLiteral("rig"),

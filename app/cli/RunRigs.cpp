@@ -21,7 +21,8 @@ const QCommandLineOption kEffect{
 const QCommandLineOption kDeviceMap{
     QStringLiteral("device-map"),
     QStringLiteral("Modbus rig: the temperature module's register map (JSON, e.g. "
-                   "resources/devices/temperature-8ch-pt100.json)."),
+                   "/usr/share/driftlab/devices/temperature-8ch-pt100.json when installed, "
+                   "resources/devices/ in the source)."),
     QStringLiteral("FILE")};
 const QCommandLineOption kMachine{
     QStringLiteral("machine"),

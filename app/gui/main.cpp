@@ -8,6 +8,7 @@
 #include <QAbstractButton>
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <QMessageBox>
 #include <QSettings>
 
@@ -20,6 +21,10 @@ int main(int argc, char** argv) {
     QApplication::setOrganizationName(QStringLiteral("DriftLab"));
     QApplication::setApplicationName(QStringLiteral("DriftLab"));
     QApplication::setApplicationVersion(QStringLiteral(DRIFTLAB_VERSION));
+    // The installed desktop entry and icon (packaging/): Wayland matches the
+    // window to its entry by this name, X11 takes the icon from the theme.
+    QApplication::setDesktopFileName(QStringLiteral("org.driftlab.DriftLab"));
+    QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("org.driftlab.DriftLab")));
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Thermal test campaigns on machine-tool feed axes."));
