@@ -206,9 +206,11 @@ TEST(ReportCli, aPositioningOnlyCampaignSaysWhichSectionsDoNotApply) {
     EXPECT_TRUE(page.contains(QStringLiteral("no moving, spindle or ETVE run")));
     const QJsonArray files = report["written"].toObject()["html_files"].toArray();
     EXPECT_TRUE(files.contains(QStringLiteral("iso230-2.png")));
-    for (const auto& f : files)
-        if (f.toString().endsWith(QStringLiteral(".png")))
+    for (const auto& f : files) {
+        if (f.toString().endsWith(QStringLiteral(".png"))) {
             EXPECT_FALSE(QImage(html + '/' + f.toString()).isNull()) << qPrintable(f.toString());
+        }
+    }
 }
 
 TEST(ReportCli, badInputFailsWithOneLineAndLeavesNoFile) {

@@ -6,6 +6,8 @@
 #include <QFile>
 #include <QProcess>
 #include <QProgressDialog>
+#include <QPushButton>
+#include <QTest>
 #include <QSignalSpy>
 
 #include "tests/ui/UiTestSupport.h"
@@ -66,7 +68,9 @@ TEST(ReportExport, cancelLeavesNoFile) {
     QSignalSpy finished(window->reportExport(), &ui::ReportExport::finished);
     ASSERT_TRUE(window->reportExport()->start(pdf));
     EXPECT_TRUE(window->reportExport()->isRunning());
-    window->reportExport()->progressDialog()->cancel();  // what its Cancel button does
+    auto* cancel = window->reportExport()->progressDialog()->findChild<QPushButton*>();
+    ASSERT_TRUE(cancel);
+    QTest::mouseClick(cancel, Qt::LeftButton);
     ASSERT_TRUE(test::waitFor(finished));
     EXPECT_FALSE(finished[0][0].toBool());
     EXPECT_EQ(finished[0][1].toString(), QStringLiteral("cancelled"));

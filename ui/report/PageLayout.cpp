@@ -110,20 +110,42 @@ private:
 std::vector<double> Placer::columnWidths(const Table& t, const QFont& body,
                                          const QFont& head) const {
     std::vector<double> natural(std::size_t(t.header.size()), 0);
-    for (int c = 0; c < t.header.size(); ++c)
-        natural[std::size_t(c)] = textWidth(head, t.header[c]) + 2 * kPad + 1;
     for (const auto& r : t.rows)
         for (std::size_t c = 0; c < r.size() && c < natural.size(); ++c)
             natural[c] = std::max(natural[c], textWidth(body, r[c].text) + 2 * kPad + 1);
+    std::vector<double> cells = natural;
     double total = 0;
-    for (double w : natural) total += w;
+    for (int c = 0; c < t.header.size(); ++c) {
+        natural[std::size_t(c)] =
+            std::max(natural[std::size_t(c)], textWidth(head, t.header[c]) + 2 * kPad + 1);
+        total += natural[std::size_t(c)];
+    }
     if (total <= width()) return natural;
-    const double fair = width() / double(natural.size());
-    double narrow = 0, wide = 0;
-    for (double w : natural) (w <= fair ? narrow : wide) += w;
+    // Too wide: a header wraps at its blanks, its longest word is what it needs.
+    natural = cells;
+    for (int c = 0; c < t.header.size(); ++c)
+        for (const QString& word : t.header[c].split(QLatin1Char(' ')))
+            natural[std::size_t(c)] =
+                std::max(natural[std::size_t(c)], textWidth(head, word) + 2 * kPad + 1);
+    // Water-filling: a column narrower than an equal share of what is left
+    // keeps its width (identifiers do not wrap); the widest share the rest.
     std::vector<double> widths = natural;
-    for (double& w : widths)
-        if (w > fair) w = std::max(fair, (width() - narrow) * w / wide);
+    std::vector<bool> open(natural.size(), true);
+    double remaining = width();
+    std::size_t openCount = natural.size();
+    for (bool fixed = true; fixed && openCount > 0;) {
+        fixed = false;
+        const double share = remaining / double(openCount);
+        for (std::size_t c = 0; c < natural.size(); ++c)
+            if (open[c] && natural[c] <= share) {
+                open[c] = false;
+                remaining -= natural[c];
+                --openCount;
+                fixed = true;
+            }
+    }
+    for (std::size_t c = 0; c < natural.size(); ++c)
+        if (open[c]) widths[c] = remaining / double(openCount);
     return widths;
 }
 
