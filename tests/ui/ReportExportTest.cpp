@@ -7,8 +7,8 @@
 #include <QProcess>
 #include <QProgressDialog>
 #include <QPushButton>
-#include <QTest>
 #include <QSignalSpy>
+#include <QTest>
 
 #include "tests/ui/UiTestSupport.h"
 #include "ui/app/MainWindow.h"
@@ -75,6 +75,26 @@ TEST(ReportExport, cancelLeavesNoFile) {
     EXPECT_FALSE(finished[0][0].toBool());
     EXPECT_EQ(finished[0][1].toString(), QStringLiteral("cancelled"));
     EXPECT_FALSE(window->reportExport()->isRunning());
+    EXPECT_FALSE(QFile::exists(pdf));
+    EXPECT_TRUE(QDir(dir.path()).entryList({QStringLiteral("*.pdf")}).isEmpty());
+}
+
+// The pages are drawn one per turn of the event loop: Cancel between them
+// discards the half-written PDF.
+TEST(ReportExport, cancelWhileThePagesAreDrawnLeavesNoFile) {
+    QTemporaryDir dir;
+    auto window = windowOnExample(dir);
+    const QString pdf = dir.filePath(QStringLiteral("report.pdf"));
+    QSignalSpy finished(window->reportExport(), &ui::ReportExport::finished);
+    QProgressDialog* dialog = window->reportExport()->progressDialog();
+    ASSERT_TRUE(window->reportExport()->start(pdf));
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return dialog->labelText().startsWith(QStringLiteral("Writing")); }, 60'000));
+    ASSERT_TRUE(finished.isEmpty()) << "the pages were drawn before the test could cancel";
+    QTest::mouseClick(dialog->findChild<QPushButton*>(), Qt::LeftButton);
+    ASSERT_TRUE(test::waitFor(finished));
+    EXPECT_FALSE(finished[0][0].toBool());
+    EXPECT_EQ(finished[0][1].toString(), QStringLiteral("cancelled"));
     EXPECT_FALSE(QFile::exists(pdf));
     EXPECT_TRUE(QDir(dir.path()).entryList({QStringLiteral("*.pdf")}).isEmpty());
 }

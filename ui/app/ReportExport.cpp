@@ -2,6 +2,7 @@
 
 #include <QDateTime>
 #include <QProgressDialog>
+#include <QTimer>
 
 #include "ui/app/BackgroundJob.h"
 #include "ui/app/FitJob.h"
@@ -45,12 +46,12 @@ ReportExport::ReportExport(Session& session, QWidget* dialogParent)
 ReportExport::~ReportExport() = default;
 
 bool ReportExport::isRunning() const {
-    return m_job->isRunning();
+    return m_job->isRunning() || m_pdf;
 }
 
 bool ReportExport::start(const QString& pdfPath) {
     const auto campaignId = m_session.campaignId();
-    if (!campaignId || m_job->isRunning()) return false;
+    if (!campaignId || isRunning()) return false;
     m_path = pdfPath;
     m_cancelled = false;
     m_dialog->setLabelText(tr("Analysing the campaign (models, diagnosis)…"));
@@ -87,12 +88,29 @@ void ReportExport::cancel() {
 
 void ReportExport::render(const driftlab::report::AcceptanceReportData& data) {
     m_dialog->setLabelText(tr("Writing %1…").arg(m_path));
-    const report::ReportDocument doc = report::reportDocument(data);
-    const report::PdfResult r = report::writeReportPdf(doc, m_path, [this](double f) {
+    m_pdf = std::make_unique<report::PdfRendering>(report::reportDocument(data), m_path);
+    if (!m_pdf->error().isEmpty()) {
+        const QString error = m_pdf->error();
+        m_pdf.reset();
+        return finish(false, error);
+    }
+    QTimer::singleShot(0, this, &ReportExport::drawNextPage);
+}
+
+void ReportExport::drawNextPage() {
+    if (!m_pdf) return;
+    if (m_cancelled) {
+        m_pdf.reset();  // discards the file
+        return finish(false, tr("cancelled"));
+    }
+    if (m_pdf->drawNextPage()) {
+        const double f = double(m_pdf->pagesDrawn()) / m_pdf->pageCount();
         m_dialog->setValue(int(kSteps * (kAnalysisShare + (1 - kAnalysisShare) * f)));
-        return !m_cancelled;
-    });
-    if (r.cancelled) return finish(false, tr("cancelled"));
+        QTimer::singleShot(0, this, &ReportExport::drawNextPage);
+        return;
+    }
+    const report::PdfResult r = m_pdf->finish();
+    m_pdf.reset();
     if (!r.ok()) return finish(false, r.error);
     finish(true, tr("%1: %2 pages").arg(m_path).arg(r.pages));
 }

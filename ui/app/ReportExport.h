@@ -3,7 +3,8 @@
 // PDF. The analysis (cross-state matrix, diagnosis: the minutes) runs on a
 // worker thread (BackgroundJob) under a QProgressDialog with Cancel; the
 // pages are then drawn on the GUI thread, because QCustomPlot is a widget
-// and widgets belong to the GUI thread (drawing takes well under a second).
+// and widgets belong to the GUI thread: one page per turn of the event loop
+// (tens of ms each), so the window stays live and Cancel works between pages.
 // The PDF goes through QSaveFile: a cancelled or failed export leaves no file.
 
 #include <QObject>
@@ -16,6 +17,9 @@ class QProgressDialog;
 class QWidget;
 
 namespace driftlab::ui {
+namespace report {
+class PdfRendering;
+}
 
 class BackgroundJob;
 class Session;
@@ -26,6 +30,7 @@ public:
     ReportExport(Session& session, QWidget* dialogParent);
     ~ReportExport() override;
 
+    /// The analysis or the drawing is under way.
     bool isRunning() const;
     QProgressDialog* progressDialog() const { return m_dialog; }
 
@@ -41,10 +46,12 @@ signals:
 
 private:
     void render(const driftlab::report::AcceptanceReportData& data);
+    void drawNextPage();
     void finish(bool written, const QString& message);
 
     Session& m_session;
     BackgroundJob* m_job;
+    std::unique_ptr<report::PdfRendering> m_pdf;  ///< while the pages are drawn
     QProgressDialog* m_dialog;
     QString m_path;
     bool m_cancelled = false;

@@ -52,7 +52,7 @@ void addCover(ReportDocument& doc, const AcceptanceReportData& data) {
 }
 
 void addIso230_2(ReportDocument& doc, const PositioningSection& s) {
-    doc.pageBreak();
+    if (s.not_applicable.isEmpty()) doc.pageBreak();  // a one-line section shares a page
     doc.heading(QStringLiteral("1 ISO 230-2: accuracy and repeatability of positioning"));
     if (!s.not_applicable.isEmpty()) {
         doc.paragraph(QStringLiteral("Not applicable: ") + s.not_applicable + QLatin1Char('.'));
@@ -123,7 +123,7 @@ void addIso230_2(ReportDocument& doc, const PositioningSection& s) {
 }
 
 void addIso230_3(ReportDocument& doc, const DriftSection& s) {
-    doc.pageBreak();
+    if (s.not_applicable.isEmpty()) doc.pageBreak();  // a one-line section shares a page
     doc.heading(QStringLiteral("2 ISO 230-3: thermal drift"));
     if (!s.not_applicable.isEmpty()) {
         doc.paragraph(QStringLiteral("Not applicable: ") + s.not_applicable + QLatin1Char('.'));

@@ -33,7 +33,7 @@ std::vector<const Table*> ReportDocument::tables() const {
 }
 
 void addModels(ReportDocument& doc, const ModelSection& s) {
-    doc.pageBreak();
+    if (s.not_applicable.isEmpty()) doc.pageBreak();  // a one-line section shares a page
     doc.heading(QStringLiteral("3 Model comparison: cross-state matrix"));
     if (!s.not_applicable.isEmpty()) return notApplicable(doc, s.not_applicable);
     doc.paragraph(QStringLiteral("RMS residual (µm) on each run (columns) of the model fitted on "
@@ -59,7 +59,7 @@ void addModels(ReportDocument& doc, const ModelSection& s) {
 }
 
 void addDiagnosis(ReportDocument& doc, const DiagnosisSection& s) {
-    doc.pageBreak();
+    if (s.not_applicable.isEmpty()) doc.pageBreak();  // a one-line section shares a page
     doc.heading(QStringLiteral("4 Diagnosis: what the thermal simulation misses"));
     if (!s.not_applicable.isEmpty()) return notApplicable(doc, s.not_applicable);
     const diagnosis::DiagnosisResult& r = s.result;
@@ -109,7 +109,7 @@ void addDiagnosis(ReportDocument& doc, const DiagnosisSection& s) {
 }
 
 void addCompensation(ReportDocument& doc, const CompensationSection& s) {
-    doc.pageBreak();
+    if (s.not_applicable.isEmpty()) doc.pageBreak();  // a one-line section shares a page
     doc.heading(QStringLiteral("5 Pitch-error compensation"));
     if (!s.not_applicable.isEmpty()) return notApplicable(doc, s.not_applicable);
     const compensation::CompensationTable& t = s.table;

@@ -6,6 +6,7 @@
 
 #include <QString>
 #include <functional>
+#include <memory>
 
 #include "ui/report/ReportDocument.h"
 
@@ -18,8 +19,33 @@ struct PdfResult {
     bool ok() const { return error.isEmpty() && !cancelled; }
 };
 
-/// Lays out and writes `doc` to `path`. `progress` gets the fraction of pages
-/// drawn and may return false to cancel. GUI thread only (plots are widgets).
+/// A PDF drawn one page at a time, so that the GUI can draw a page per turn
+/// of its event loop (and take a Cancel between pages). GUI thread only:
+/// plots are widgets.
+class PdfRendering {
+public:
+    /// Opens `path` (through QSaveFile) and lays `doc` out; see error().
+    PdfRendering(ReportDocument doc, const QString& path);
+    ~PdfRendering();  ///< unfinished: nothing is written
+
+    QString error() const { return m_error; }
+    int pageCount() const;
+    int pagesDrawn() const { return m_next; }
+    /// Draws the next page; false when there is none left (or an error).
+    bool drawNextPage();
+    /// Ends the PDF and moves it into place (every page drawn first).
+    PdfResult finish();
+
+private:
+    struct State;
+    ReportDocument m_doc;
+    QString m_path, m_error;
+    std::unique_ptr<State> m_state;
+    int m_next = 0;
+};
+
+/// Lays out and writes `doc` to `path` in one go. `progress` gets the
+/// fraction of pages drawn and may return false to cancel.
 PdfResult writeReportPdf(const ReportDocument& doc, const QString& path,
                          const std::function<bool(double)>& progress = {});
 
