@@ -29,6 +29,9 @@ void printLoggingLine(const QJsonObject& figures);
 QJsonObject liveReadFigures(int readings);
 QJsonObject plotFigures(int repetitions);
 void printPlotLine(const QJsonObject& figures);
+/// ReportBench.cpp: the acceptance report's data and PDF drawing, ms.
+QJsonObject reportFigures(int repetitions);
+void printReportLine(const QJsonObject& figures);
 
 namespace {
 
@@ -155,7 +158,8 @@ int benchCommand(const QStringList& args) {
         QStringLiteral("N"), QStringLiteral("50")};
     const QCommandLineOption only{
         QStringLiteral("only"),
-        QStringLiteral("Measure only this figure: push, online, logging, live-read, plot."),
+        QStringLiteral("Measure only this figure: push, online, logging, live-read, plot, "
+                       "report."),
         QStringLiteral("FIGURE")};
     parseArguments(parser, args, {repeat, noPython, importMb, pushes, only});
     const int pushCount = parser.value(pushes).toInt();
@@ -211,9 +215,20 @@ int benchCommand(const QStringList& args) {
             printPlotLine(figures);
         return 0;
     }
+    if (parser.value(only) == QLatin1String("report")) {
+        // Three by default: the data part takes tens of seconds.
+        const QJsonObject figures =
+            reportFigures(parser.isSet(repeat) ? std::max(1, parser.value(repeat).toInt()) : 3);
+        endProgressLine();
+        if (parser.isSet(QStringLiteral("json")))
+            printJson(figures);
+        else
+            printReportLine(figures);
+        return 0;
+    }
     if (parser.isSet(only))
         throw CliError(QStringLiteral("--only: '%1' is not a figure it can measure alone (push, "
-                                      "online, logging, live-read, plot)")
+                                      "online, logging, live-read, plot, report)")
                            .arg(parser.value(only)),
                        2);
     const int repetitions = std::max(1, parser.value(repeat).toInt());

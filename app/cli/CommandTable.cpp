@@ -20,6 +20,7 @@ int healthCommand(const QStringList& args);
 int controllerSimCommand(const QStringList& args);
 int pushesCommand(const QStringList& args);
 int runCommand(const QStringList& args);
+int reportCommand(const QStringList& args);
 
 namespace {
 
@@ -116,8 +117,11 @@ const std::vector<Command>& commands() {
          QStringLiteral("Run a test procedure (ISO 230-2, ISO 230-3, ETVE, spindle, moving "
                         "states) on a rig and log it live into the store; prints the campaign "
                         "id. Ctrl-C keeps what was logged; --resume continues the run.")},
-        {QStringLiteral("report"), nullptr, QStringLiteral("report BUNDLE --pdf FILE"),
-         QStringLiteral("The acceptance report (PDF, HTML).")},
+        {QStringLiteral("report"), reportCommand,
+         QStringLiteral("report BUNDLE --pdf FILE | --html DIR | --csv DIR [--run R] "
+                        "[--operator NAME]"),
+         QStringLiteral("The acceptance report: ISO 230-2, ISO 230-3, model comparison, "
+                        "diagnosis and compensation, as PDF (vector plots), HTML and/or CSV.")},
         {QStringLiteral("batch"), nullptr, QStringLiteral("batch PATH..."),
          QStringLiteral("Analyse many bundles or databases, one JSON line each.")},
         {QStringLiteral("bench"), benchCommand, QStringLiteral("bench [--json]"),

@@ -15,10 +15,10 @@ using namespace driftlab::test;
 
 namespace {
 
-const QStringList kNotBuilt{"report", "batch"};
+const QStringList kNotBuilt{"batch"};
 const QStringList kBuilt{"import",   "export",   "info",   "simulate",   "fit",    "compare",
                          "diagnose", "iso230-2", "bench",  "compensate", "pushes", "controller-sim",
-                         "live",     "iso230-3", "health", "run"};
+                         "live",     "iso230-3", "health", "run",        "report"};
 
 QJsonObject json(const CliResult& r) {
     return QJsonDocument::fromJson(r.out).object();
@@ -64,8 +64,8 @@ TEST(CliUsage, usageMarksCommandsNotBuiltYet) {
         EXPECT_EQ(at->endsWith("   (not built yet)"), kNotBuilt.contains(name)) << at->constData();
     }
     EXPECT_TRUE(
-        usage().contains("\n  report BUNDLE --pdf FILE   (not built yet)\n      The acceptance "
-                         "report (PDF, HTML).\n"));
+        usage().contains("\n  batch PATH...   (not built yet)\n      Analyse many bundles or "
+                         "databases, one JSON line each.\n"));
 }
 
 TEST(CliUsage, bareCommandLineAsksForACommandOnStderr) {
@@ -159,9 +159,9 @@ TEST(CliUsage, notBuiltCommandSaysSo) {
         EXPECT_EQ(r.err, "driftlab-cli " + name.toUtf8() + ": not built yet in DriftLab " +
                              DRIFTLAB_VERSION + "\n");
     }
-    CliResult help = runCli({QStringLiteral("help"), QStringLiteral("report")});
+    CliResult help = runCli({QStringLiteral("help"), QStringLiteral("batch")});
     EXPECT_EQ(help.exitCode, 3);
-    EXPECT_EQ(help.err, "driftlab-cli report: not built yet in DriftLab " DRIFTLAB_VERSION "\n");
+    EXPECT_EQ(help.err, "driftlab-cli batch: not built yet in DriftLab " DRIFTLAB_VERSION "\n");
 }
 
 TEST(CliUsage, missingRequiredOptionNamesCommandAndOption) {

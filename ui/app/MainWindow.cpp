@@ -18,6 +18,7 @@
 
 #include "db/CampaignStore.h"
 #include "db/StoreOverview.h"
+#include "ui/app/ReportExport.h"
 #include "ui/app/Session.h"
 #include "ui/models/CampaignTreeModel.h"
 #include "ui/models/EventLogModel.h"
@@ -49,6 +50,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_diagnosis = new DiagnosisPage(*m_session, m_tabs);
     m_compensation = new CompensationPage(*m_session, m_tabs);
     m_iso = new Iso230_2Page(*m_session, m_tabs);
+    m_report = new ReportExport(*m_session, this);
     m_tabs->addTab(m_setup, tr("Set-up"));
     m_tabs->addTab(m_run, tr("Run"));
     m_tabs->addTab(m_models, tr("Models"));
@@ -127,6 +129,18 @@ void MainWindow::buildMenus() {
     });
     m_recent = file->addMenu(tr("Recent stores"));
     file->addSeparator();
+    QAction* report = file->addAction(tr("&Export report…"), this, &MainWindow::exportReport);
+    report->setObjectName(QStringLiteral("ExportReportAction"));
+    report->setEnabled(false);
+    connect(m_session, &Session::campaignSelected, report,
+            [report](std::optional<qint64> id) { report->setEnabled(id.has_value()); });
+    // Not a message box: the event log has it, and an export must not block the window.
+    connect(m_report, &ReportExport::finished, this, [this](bool written, const QString& message) {
+        statusBar()->showMessage(written ? tr("Report written: %1").arg(message)
+                                         : tr("Report not written: %1").arg(message),
+                                 10'000);
+    });
+    file->addSeparator();
     file->addAction(tr("Run the &demo"), this, &MainWindow::startDemo);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -182,6 +196,13 @@ void MainWindow::updateRecentMenu() {
     for (const QString& path : QSettings().value(kRecentKey).toStringList())
         m_recent->addAction(path, this, [this, path] { openStore(path, false); });
     m_recent->setEnabled(!m_recent->isEmpty());
+}
+
+void MainWindow::exportReport() {
+    if (!m_session->campaignId()) return;
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export acceptance report"), {}, tr("PDF (*.pdf)"));
+    if (!path.isEmpty()) m_report->start(path);
 }
 
 void MainWindow::startDemo() {

@@ -22,6 +22,7 @@ class ModelsPage;
 class DiagnosisPage;
 class CompensationPage;
 class Iso230_2Page;
+class ReportExport;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -39,6 +40,8 @@ public:
     DiagnosisPage* diagnosisPage() const { return m_diagnosis; }
     CompensationPage* compensationPage() const { return m_compensation; }
     Iso230_2Page* iso230_2Page() const { return m_iso; }
+    /// File → Export report…: the acceptance report of the selected campaign.
+    ReportExport* reportExport() const { return m_report; }
 
     /// Opens a store (creating it when `create`); errors go to the event log
     /// and, with `tellUser`, to a message box.
@@ -57,6 +60,7 @@ private:
     void buildDocks();
     void rememberStore(const QString& path);
     void updateRecentMenu();
+    void exportReport();
 
     Session* m_session;
     CampaignTreeModel* m_tree;
@@ -70,6 +74,7 @@ private:
     DiagnosisPage* m_diagnosis;
     CompensationPage* m_compensation;
     Iso230_2Page* m_iso;
+    ReportExport* m_report;
 };
 
 }  // namespace driftlab::ui

@@ -29,6 +29,10 @@ int Iso230_2Plot::graphCount() const {
     return m_plot->graphCount();
 }
 
+void Iso230_2Plot::render(QCPPainter* painter, int width, int height) {
+    m_plot->toPainter(painter, width, height);
+}
+
 void Iso230_2Plot::show(const iso::Evaluation& evaluation) {
     m_plot->clearPlottables();
     const double k = evaluation.settings.coverage_factor;

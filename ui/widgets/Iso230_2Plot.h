@@ -8,6 +8,7 @@
 #include "core/iso/Iso230_2.h"
 
 class QCustomPlot;
+class QCPPainter;
 
 namespace driftlab::ui {
 
@@ -19,6 +20,9 @@ public:
     void show(const iso::Evaluation& evaluation);
     void clear();
     int graphCount() const;
+    /// Draws the figure shown into `painter` at width × height (a PDF page
+    /// of the acceptance report draws it as vectors).
+    void render(QCPPainter* painter, int width, int height);
 
 private:
     QCustomPlot* m_plot;
