@@ -15,10 +15,10 @@ using namespace driftlab::test;
 
 namespace {
 
-const QStringList kNotBuilt{"report", "batch"};
+const QStringList kNotBuilt{"report"};
 const QStringList kBuilt{"import",   "export",   "info",   "simulate",   "fit",    "compare",
                          "diagnose", "iso230-2", "bench",  "compensate", "pushes", "controller-sim",
-                         "live",     "iso230-3", "health", "run"};
+                         "live",     "iso230-3", "health", "run",        "batch"};
 
 QJsonObject json(const CliResult& r) {
     return QJsonDocument::fromJson(r.out).object();
