@@ -42,9 +42,20 @@ QJsonValue iso230Result(const Campaign& campaign, QJsonObject& skipped) {
     return json;
 }
 
-/// `fit --model heat-transfer --json`: trained on the first feed-axis run, scored on the others.
+/// `fit --model heat-transfer --json`: trained on the first feed-axis run,
+/// scored on the others; without how long the fit took (its message and
+/// identification_s), so that two batches of the same campaigns give the same
+/// lines (the item's own "seconds" says how long it took).
 QJsonValue fitResult(const Campaign& campaign) {
-    return fitHeldOut(campaign, kBatchModel, std::nullopt, std::nullopt, QString(), false).json();
+    QJsonObject json =
+        fitHeldOut(campaign, kBatchModel, std::nullopt, std::nullopt, QString(), false).json();
+    QJsonObject fit = json[QStringLiteral("fit")].toObject();
+    QJsonObject metrics = fit[QStringLiteral("metrics")].toObject();
+    metrics.remove(QStringLiteral("identification_s"));
+    fit[QStringLiteral("metrics")] = metrics;
+    fit.remove(QStringLiteral("message"));
+    json[QStringLiteral("fit")] = fit;
+    return json;
 }
 
 /// `diagnose --json` in short: runs, the base model's held-out figures, each
