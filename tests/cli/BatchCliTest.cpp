@@ -286,3 +286,17 @@ TEST_F(BatchCli, allGoodExitsZeroAndUsageErrorsExitTwo) {
     // The per-item child is DriftLab's own, not a command for users.
     EXPECT_FALSE(runCli({QStringLiteral("--help")}).out.contains("batch-item"));
 }
+
+TEST_F(BatchCli, memoryLimitReachesTheItemsProcessAndItsFailureIsItsLine) {
+    // 64 MiB of address space is too little for the analysis process even to
+    // load its libraries: the item fails with the reason its process gave.
+    const CliResult r =
+        runCli({QStringLiteral("batch"), lab("b"), QStringLiteral("--what"), QStringLiteral("info"),
+                QStringLiteral("--memory-mb"), QStringLiteral("64")});
+    EXPECT_EQ(r.exitCode, 1);
+    const QList<QJsonObject> lines = jsonLines(r.out);
+    ASSERT_EQ(lines.size(), 1);
+    EXPECT_FALSE(lines[0][QStringLiteral("ok")].toBool());
+    EXPECT_FALSE(lines[0][QStringLiteral("error")].toString().isEmpty());
+    EXPECT_FALSE(lines[0].contains(QStringLiteral("name")));
+}
