@@ -2,6 +2,7 @@
 #include <QFileInfo>
 #include <QJsonArray>
 
+#include "app/cli/AnalysisJson.h"
 #include "app/cli/CliCommon.h"
 #include "core/bundle/BundleWriter.h"
 #include "db/CampaignImport.h"
@@ -100,29 +101,9 @@ int infoCommand(const QStringList& args) {
     parseArguments(parser, args, campaignSourceOptions(), campaignSourceArguments());
     const Campaign c = loadCampaignSource(parser);
 
-    QJsonArray runs, channels;
-    for (const Run& run : c.runs)
-        runs.append(QJsonObject{
-            {QStringLiteral("id"), run.id},
-            {QStringLiteral("kind"), toString(run.kind)},
-            {QStringLiteral("samples"), qint64(run.samples.presentValueCount())},
-            {QStringLiteral("sample_times"), qint64(run.samples.rowCount())},
-            {QStringLiteral("positioning"), qint64(run.positioning.size())},
-            {QStringLiteral("motion_segments"), qint64(run.motion.size())},
-            {QStringLiteral("duration_s"),
-             run.samples.rowCount() ? run.samples.time_s.back() - run.samples.time_s.front()
-                                    : 0.0}});
-    for (const Channel& ch : c.channels)
-        channels.append(QJsonObject{{QStringLiteral("id"), ch.id},
-                                    {QStringLiteral("quantity"), toString(ch.quantity)},
-                                    {QStringLiteral("role"), toString(ch.role)},
-                                    {QStringLiteral("unit"), unitOf(ch.quantity)}});
+    const QJsonObject info = campaignInfoJson(c);
     if (parser.isSet(QStringLiteral("json"))) {
-        printJson({{QStringLiteral("name"), c.name},
-                   {QStringLiteral("machine"), c.machine.name},
-                   {QStringLiteral("axis"), c.machine.axis},
-                   {QStringLiteral("runs"), runs},
-                   {QStringLiteral("channels"), channels}});
+        printJson(info);
         return 0;
     }
     printLine(QStringLiteral("%1 — %2, axis %3").arg(c.name, c.machine.name, c.machine.axis));
@@ -138,7 +119,7 @@ int infoCommand(const QStringList& args) {
                       .arg(ch.id, -18)
                       .arg(toString(ch.quantity), toString(ch.role), unitOf(ch.quantity)));
     printLine(QStringLiteral("runs:"));
-    for (const QJsonValue& v : runs) {
+    for (const QJsonValue& v : info[QStringLiteral("runs")].toArray()) {
         const QJsonObject r = v.toObject();
         printLine(QStringLiteral("  %1  %2  %3 samples at %4 times over %5 s, %6 positioning "
                                  "readings, %7 motion segments")

@@ -21,6 +21,8 @@ int controllerSimCommand(const QStringList& args);
 int pushesCommand(const QStringList& args);
 int runCommand(const QStringList& args);
 int reportCommand(const QStringList& args);
+int batchCommand(const QStringList& args);
+int batchItemCommand(const QStringList& args);
 
 namespace {
 
@@ -122,11 +124,19 @@ const std::vector<Command>& commands() {
                         "[--operator NAME]"),
          QStringLiteral("The acceptance report: ISO 230-2, ISO 230-3, model comparison, "
                         "diagnosis and compensation, as PDF (vector plots), HTML and/or CSV.")},
-        {QStringLiteral("batch"), nullptr, QStringLiteral("batch PATH..."),
-         QStringLiteral("Analyse many bundles or databases, one JSON line each.")},
+        {QStringLiteral("batch"), batchCommand,
+         QStringLiteral("batch PATH... [-j N] [--what info,iso230-2,fit,diagnose] "
+                        "[--timeout-s S]"),
+         QStringLiteral("Analyse many bundles or databases, one JSON line each: bundle folders, "
+                        ".zip bundles, stores (each campaign in them) and folders searched for "
+                        "them, N at a time in separate processes.")},
         {QStringLiteral("bench"), benchCommand, QStringLiteral("bench [--json]"),
          QStringLiteral("The performance figures of DESIGN.md section 10, measured on this "
                         "machine.")},
+        {QStringLiteral("batch-item"), batchItemCommand,
+         QStringLiteral("batch-item BUNDLE [--what LIST]"),
+         QStringLiteral("One item of batch, analysed in the child process batch starts for it."),
+         true},
     };
     return table;
 }
@@ -142,11 +152,13 @@ QString closestCommand(const QString& name) {
     // typos away, as long as the typos do not make up most of the word.
     QStringList prefixed;
     for (const Command& command : commands())
-        if (name.size() >= 2 && command.name.startsWith(name)) prefixed << command.name;
+        if (!command.hidden && name.size() >= 2 && command.name.startsWith(name))
+            prefixed << command.name;
     if (prefixed.size() == 1) return prefixed.front();
     QString best;
     int bestDistance = std::min<int>(2, (name.size() - 1) / 2) + 1;
     for (const Command& command : commands()) {
+        if (command.hidden) continue;
         const int d = editDistance(name.toLower(), command.name);
         if (d < bestDistance) {
             bestDistance = d;
@@ -169,11 +181,13 @@ QString usageText() {
         "Commands:\n");
     // The synopsis on its own line, what it does below it: synopses are too
     // long for two columns in a terminal of 80.
-    for (const Command& command : commands())
+    for (const Command& command : commands()) {
+        if (command.hidden) continue;
         text += QStringLiteral("  %1%2\n")
                     .arg(command.synopsis,
                          command.run ? QString() : QStringLiteral("   (not built yet)")) +
                 wrapped(command.summary, 6, 79);
+    }
     text += QStringLiteral(
         "\n"
         "Wherever a BUNDLE is taken, --db FILE --campaign ID may be given instead.\n"

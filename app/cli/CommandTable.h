@@ -18,6 +18,9 @@ struct Command {
     int (*run)(const QStringList& args) = nullptr;
     QString synopsis;  ///< e.g. "import BUNDLE --db FILE"
     QString summary;   ///< what it does, one line; also the first line of its --help
+    /// Not in the usage nor guessed for a typo: a command DriftLab runs itself
+    /// (batch's per-item child), not one for users.
+    bool hidden = false;
 };
 
 /// Every command, in the order of DESIGN.md section 9.

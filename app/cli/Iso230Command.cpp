@@ -4,6 +4,7 @@
 #include <QFileInfo>
 #include <QJsonArray>
 
+#include "app/cli/AnalysisJson.h"
 #include "app/cli/CliCommon.h"
 #include "core/bundle/CsvTable.h"
 #include "core/iso/Iso230_2.h"
@@ -43,47 +44,6 @@ std::vector<iso::Reading> readCsv(const QString& path) {
 
 QString um(double value) {
     return std::isfinite(value) ? QString::number(value, 'f', 3) : QStringLiteral("n/a");
-}
-
-QJsonObject targetJson(const iso::TargetResult& t) {
-    return {{QStringLiteral("target_mm"), t.target_mm},
-            {QStringLiteral("n_up"), t.n_up},
-            {QStringLiteral("n_down"), t.n_down},
-            {QStringLiteral("mean_up"), jsonNumber(t.mean_up_um)},
-            {QStringLiteral("mean_down"), jsonNumber(t.mean_down_um)},
-            {QStringLiteral("mean"), jsonNumber(t.mean_um)},
-            {QStringLiteral("s_up"), jsonNumber(t.s_up_um)},
-            {QStringLiteral("s_down"), jsonNumber(t.s_down_um)},
-            {QStringLiteral("B"), jsonNumber(t.reversal_um)},
-            {QStringLiteral("R_up"), jsonNumber(t.r_up_um)},
-            {QStringLiteral("R_down"), jsonNumber(t.r_down_um)},
-            {QStringLiteral("R"), jsonNumber(t.r_um)}};
-}
-
-QJsonObject evaluationJson(const iso::Evaluation& e) {
-    const iso::AxisResult& a = e.axis;
-    QJsonArray targets;
-    for (const iso::TargetResult& t : e.targets) targets.append(targetJson(t));
-    return {{QStringLiteral("edition"), iso::editionYear(e.settings.edition)},
-            {QStringLiteral("standard"), iso::toString(e.settings.edition)},
-            {QStringLiteral("coverage_factor"), e.settings.coverage_factor},
-            {QStringLiteral("unit"), QStringLiteral("µm")},
-            {QStringLiteral("B"), jsonNumber(a.reversal_um)},
-            {QStringLiteral("B_mean"), jsonNumber(a.mean_reversal_um)},
-            {QStringLiteral("R_up"), jsonNumber(a.r_up_um)},
-            {QStringLiteral("R_down"), jsonNumber(a.r_down_um)},
-            {QStringLiteral("R"), jsonNumber(a.r_um)},
-            {QStringLiteral("E_up"), jsonNumber(a.e_up_um)},
-            {QStringLiteral("E_down"), jsonNumber(a.e_down_um)},
-            {QStringLiteral("E"), jsonNumber(a.e_um)},
-            {QStringLiteral("M"), jsonNumber(a.m_um)},
-            {QStringLiteral("A_up"), jsonNumber(a.a_up_um)},
-            {QStringLiteral("A_down"), jsonNumber(a.a_down_um)},
-            {QStringLiteral("A"), jsonNumber(a.a_um)},
-            {QStringLiteral("cycles"), e.cycles},
-            {QStringLiteral("targets"), targets},
-            {QStringLiteral("skipped"), QJsonArray::fromStringList(e.skipped)},
-            {QStringLiteral("warnings"), QJsonArray::fromStringList(e.warnings)}};
 }
 
 void printEvaluation(const iso::Evaluation& e, const QString& source) {
@@ -191,7 +151,7 @@ int iso230Command(const QStringList& args) {
     if (!result.ok()) throw CliError(source + QStringLiteral(": ") + result.error);
     printWarnings(result.warnings);
     if (parser.isSet(QStringLiteral("json"))) {
-        QJsonObject json = evaluationJson(result);
+        QJsonObject json = iso230EvaluationJson(result);
         json[QStringLiteral("source")] = source;
         printJson(json);
         return 0;

@@ -4,22 +4,13 @@
 
 #include "app/cli/CliCommon.h"
 #include "app/cli/FlaggedSamples.h"
+#include "app/cli/HeldOutFit.h"
 #include "core/models/ModelFactory.h"
 #include "core/models/ModelScore.h"
 #include "core/models/ModelledRuns.h"
-#include "db/ModelFitRecords.h"
 
 namespace driftlab::cli {
 namespace {
-
-std::vector<models::RunData> dataset(const Campaign& campaign, const QStringList& runs,
-                                     const QString& target) {
-    models::DatasetOptions options;
-    options.target_channel = target;
-    models::DatasetResult result = models::buildDataset(campaign, runs, options);
-    if (!result.ok()) throw CliError(result.error);
-    return std::move(result.runs);
-}
 
 /// What the diagonal of the cross-state matrix is: not a held-out score.
 const QString kDiagonal = QStringLiteral("training score (fitted and scored on the same run)");
@@ -50,66 +41,24 @@ int fitCommand(const QStringList& args) {
                    campaignSourceOptions()
                        << model << train << test << kTargetOption << keepFlaggedOption(),
                    campaignSourceArguments({model}));
-    auto m = models::makeModel(parser.value(model));
-    if (!m)
-        throw CliError(QStringLiteral("--model: '%1' is not a model (%2)")
-                           .arg(parser.value(model), models::modelNames().join(", ")),
-                       2);
-    QStringList trainRuns = runList(parser.value(train));
-    QStringList testRuns = runList(parser.value(test));
-    refuseOverlappingRuns(trainRuns, testRuns);
+    const std::optional<QStringList> trainRuns =
+        parser.isSet(train) ? std::optional(runList(parser.value(train))) : std::nullopt;
+    const std::optional<QStringList> testRuns =
+        parser.isSet(test) ? std::optional(runList(parser.value(test))) : std::nullopt;
+    refuseOverlappingRuns(trainRuns.value_or(QStringList()), testRuns.value_or(QStringList()));
+    makeModelOrFail(parser.value(model));  // refused before the campaign is read
     Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
     leaveOutFlaggedSamples(parser, campaign);
-    const QString target = parser.value(kTargetOption);
-    const QStringList all = models::modelledRuns(campaign, target);
-    if (!parser.isSet(train))
-        for (const QString& id : all)
-            if (!testRuns.contains(id)) {
-                trainRuns << id;
-                break;
-            }
-    if (!parser.isSet(test))
-        for (const QString& id : all)
-            if (!trainRuns.contains(id)) testRuns << id;
-    if (trainRuns.isEmpty()) throw CliError(QStringLiteral("no run to fit on"));
-
-    printProgress(QStringLiteral("fitting ") + m->name(), 0);
-    const models::FitSummary fit = m->fit(dataset(campaign, trainRuns, target));
-    printProgress(QStringLiteral("fitting ") + m->name(), 1);
-    if (!fit.success) throw CliError(fit.message);
-
-    // With no run left out (one run, or --test with none) the only score there
-    // is comes from the training runs: it is labelled so, and never stands
-    // where a script or the database expects a held-out score.
-    const bool heldOut = !testRuns.isEmpty();
-    const QStringList scoredRuns = heldOut ? testRuns : trainRuns;
-    const models::Score score = models::scoreModel(*m, dataset(campaign, scoredRuns, target));
-    if (!score.ok()) throw CliError(score.error);
-    const db::ModelFitRecord record =
-        db::modelFitRecord(m->name(), target, trainRuns, testRuns, fit, score);
-    const QJsonObject& parameters = record.parameters;
-    const QJsonObject& metrics = record.metrics;
-    const QJsonObject figures = db::scoreJson(score);
-    const QString scoreKind = metrics[QStringLiteral("score_kind")].toString();
-    storeFitIfFromDatabase(parser, record);
+    const HeldOutFit r = fitHeldOut(campaign, parser.value(model), trainRuns, testRuns,
+                                    parser.value(kTargetOption), true);
+    storeFitIfFromDatabase(parser, r.record);
 
     if (parser.isSet(QStringLiteral("json"))) {
-        QJsonObject scored = figures;
-        scored[QStringLiteral("runs")] = QJsonArray::fromStringList(scoredRuns);
-        printJson({{QStringLiteral("model"), m->name()},
-                   {QStringLiteral("train_runs"), QJsonArray::fromStringList(trainRuns)},
-                   {QStringLiteral("test_runs"), QJsonArray::fromStringList(testRuns)},
-                   {QStringLiteral("parameters"), parameters},
-                   {QStringLiteral("score_kind"), scoreKind},
-                   {QStringLiteral("score"), scored},
-                   {QStringLiteral("test"), heldOut ? figures : QJsonObject()},
-                   {QStringLiteral("fit"),
-                    QJsonObject{{QStringLiteral("message"), fit.message},
-                                {QStringLiteral("rms_um"), jsonNumber(fit.rms_um)},
-                                {QStringLiteral("notes"), QJsonArray::fromStringList(fit.notes)},
-                                {QStringLiteral("metrics"), metrics}}}});
+        printJson(r.json());
         return 0;
     }
+    const models::FitSummary& fit = r.fit;
+    const models::Score& score = r.score;
     printLine(fit.message);
     for (const auto& [name, p] : fit.parameters)
         printLine(QStringLiteral("  %1 = %2 ± %3 %4")
@@ -119,10 +68,10 @@ int fitCommand(const QStringList& args) {
                                                   : QStringLiteral("?"))
                       .arg(p.unit));
     for (const QString& note : fit.notes) printLine(QStringLiteral("  note: ") + note);
-    printLine((heldOut ? QStringLiteral("held-out score on %1 (runs the fit has not seen)")
-                       : QStringLiteral("training score on %1 (the runs it was fitted on; no "
-                                        "run held out, so not a held-out score)"))
-                  .arg(scoredRuns.join(QLatin1Char(','))) +
+    printLine((r.heldOut() ? QStringLiteral("held-out score on %1 (runs the fit has not seen)")
+                           : QStringLiteral("training score on %1 (the runs it was fitted on; no "
+                                            "run held out, so not a held-out score)"))
+                  .arg(r.scoredRuns().join(QLatin1Char(','))) +
               QStringLiteral(": RMS %1 µm, peak %2 µm, %3 % of the thermal error removed")
                   .arg(score.rms_um, 0, 'f', 2)
                   .arg(score.peak_um, 0, 'f', 2)
@@ -142,7 +91,7 @@ int compareCommand(const QStringList& args) {
     leaveOutFlaggedSamples(parser, campaign);
     const QString target = parser.value(kTargetOption);
     const QStringList runs = models::modelledRuns(campaign, target);
-    const auto data = dataset(campaign, runs, target);
+    const auto data = modelDataset(campaign, runs, target);
     QStringList names = parser.isSet(only) ? runList(parser.value(only)) : models::modelNames();
     // The heat-transfer model predicts the screw; it has nothing to say on a drift channel.
     if (!target.isEmpty() && !parser.isSet(only)) names.removeAll(QStringLiteral("heat-transfer"));

@@ -1,0 +1,81 @@
+#include "app/cli/HeldOutFit.h"
+
+#include <QJsonArray>
+
+#include "app/cli/CliCommon.h"
+#include "core/models/ModelFactory.h"
+#include "core/models/ModelledRuns.h"
+#include "db/ModelFitRecords.h"
+
+namespace driftlab::cli {
+std::vector<models::RunData> modelDataset(const Campaign& campaign, const QStringList& runs,
+                                          const QString& target) {
+    models::DatasetOptions options;
+    options.target_channel = target;
+    models::DatasetResult result = models::buildDataset(campaign, runs, options);
+    if (!result.ok()) throw CliError(result.error);
+    return std::move(result.runs);
+}
+
+std::unique_ptr<models::ThermalErrorModel> makeModelOrFail(const QString& name) {
+    auto model = models::makeModel(name);
+    if (!model)
+        throw CliError(QStringLiteral("--model: '%1' is not a model (%2)")
+                           .arg(name, models::modelNames().join(", ")),
+                       2);
+    return model;
+}
+
+QJsonObject HeldOutFit::json() const {
+    const QJsonObject& metrics = record.metrics;
+    QJsonObject scored = db::scoreJson(score);
+    scored[QStringLiteral("runs")] = QJsonArray::fromStringList(scoredRuns());
+    return {{QStringLiteral("model"), model->name()},
+            {QStringLiteral("train_runs"), QJsonArray::fromStringList(trainRuns)},
+            {QStringLiteral("test_runs"), QJsonArray::fromStringList(testRuns)},
+            {QStringLiteral("parameters"), record.parameters},
+            {QStringLiteral("score_kind"), metrics[QStringLiteral("score_kind")].toString()},
+            {QStringLiteral("score"), scored},
+            {QStringLiteral("test"), heldOut() ? db::scoreJson(score) : QJsonObject()},
+            {QStringLiteral("fit"),
+             QJsonObject{{QStringLiteral("message"), fit.message},
+                         {QStringLiteral("rms_um"), jsonNumber(fit.rms_um)},
+                         {QStringLiteral("notes"), QJsonArray::fromStringList(fit.notes)},
+                         {QStringLiteral("metrics"), metrics}}}};
+}
+
+HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
+                      std::optional<QStringList> train, std::optional<QStringList> test,
+                      const QString& target, bool progress) {
+    HeldOutFit r;
+    r.model = makeModelOrFail(modelName);
+    r.trainRuns = train.value_or(QStringList());
+    r.testRuns = test.value_or(QStringList());
+    const QStringList all = models::modelledRuns(campaign, target);
+    if (!train)
+        for (const QString& id : all)
+            if (!r.testRuns.contains(id)) {
+                r.trainRuns << id;
+                break;
+            }
+    if (!test)
+        for (const QString& id : all)
+            if (!r.trainRuns.contains(id)) r.testRuns << id;
+    if (r.trainRuns.isEmpty()) throw CliError(QStringLiteral("no run to fit on"));
+
+    const QString label = QStringLiteral("fitting ") + r.model->name();
+    if (progress) printProgress(label, 0);
+    r.fit = r.model->fit(modelDataset(campaign, r.trainRuns, target));
+    if (progress) printProgress(label, 1);
+    if (!r.fit.success) throw CliError(r.fit.message);
+
+    // With no run left out (one run, or --test with none) the only score there
+    // is comes from the training runs: it is labelled so, and never stands
+    // where a script or the database expects a held-out score.
+    r.score = models::scoreModel(*r.model, modelDataset(campaign, r.scoredRuns(), target));
+    if (!r.score.ok()) throw CliError(r.score.error);
+    r.record = db::modelFitRecord(r.model->name(), target, r.trainRuns, r.testRuns, r.fit, r.score);
+    return r;
+}
+
+}  // namespace driftlab::cli

@@ -1,0 +1,48 @@
+#pragma once
+// One model fitted on training runs and scored on held-out runs: what `fit`
+// prints and what `batch` reports for each campaign, from the same code.
+
+#include <QJsonObject>
+#include <QStringList>
+#include <memory>
+#include <optional>
+
+#include "core/domain/Campaign.h"
+#include "core/models/ModelScore.h"
+#include "core/models/ThermalErrorModel.h"
+#include "db/ModelFitStore.h"
+
+namespace driftlab::cli {
+
+/// The runs' data for a model (`target`: a drift channel, or empty for the
+/// positioning error); throws CliError naming what is missing.
+std::vector<models::RunData> modelDataset(const Campaign& campaign, const QStringList& runs,
+                                          const QString& target);
+/// The model called `name`; throws CliError (exit 2) naming the models there are.
+std::unique_ptr<models::ThermalErrorModel> makeModelOrFail(const QString& name);
+
+struct HeldOutFit {
+    std::unique_ptr<models::ThermalErrorModel> model;
+    QStringList trainRuns;
+    QStringList testRuns;  ///< empty: no run held out, the score is a training score
+    models::FitSummary fit;
+    models::Score score;
+    db::ModelFitRecord record;  ///< as the store keeps it
+
+    bool heldOut() const { return !testRuns.isEmpty(); }
+    /// The runs the score is on: the test runs, or the training runs when none is held out.
+    QStringList scoredRuns() const { return heldOut() ? testRuns : trainRuns; }
+    /// `fit --json`: model, runs, parameters, score kind, score, test, fit.
+    QJsonObject json() const;
+};
+
+/// Fits `modelName` on `train` and scores it on `test`. Without `train`: the
+/// first modelled run that is not a test run; without `test`: every other
+/// modelled run (DESIGN.md section 5). `target` is a drift channel, or empty
+/// for the positioning error. `progress` labels stderr progress, when given.
+/// Throws CliError (exit 2 for an unknown model, 1 when the fit fails).
+HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
+                      std::optional<QStringList> train, std::optional<QStringList> test,
+                      const QString& target, bool progress);
+
+}  // namespace driftlab::cli
