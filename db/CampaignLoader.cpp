@@ -6,7 +6,6 @@
 #include "db/CampaignStore.h"
 #include "db/SampleBlocks.h"
 #include "db/SqlValues.h"
-#include "db/SqliteStatement.h"
 
 namespace driftlab::db {
 namespace {
@@ -100,7 +99,6 @@ std::optional<Campaign> CampaignStore::loadCampaign(qint64 id, QString* error) c
                 "SELECT id, name, kind, feed_mm_min, range_from_mm, range_to_mm, description, "
                 "extra_json FROM run WHERE campaign_id = ? ORDER BY ordinal"),
             id);
-        sqlite3* handle = sqliteHandle(m_db);
         while (q.next()) {
             Run run;
             const qint64 runId = q.value(0).toLongLong();
@@ -133,7 +131,7 @@ std::optional<Campaign> CampaignStore::loadCampaign(qint64 id, QString* error) c
                      p.value(4).toDouble()});
 
             run.samples.columns = c.sample_columns;
-            loadSampleBlocks(handle, runId, run.samples);
+            loadSampleBlocks(m_db, runId, run.samples);
             c.runs.push_back(std::move(run));
         }
         return c;
