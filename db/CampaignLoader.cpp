@@ -6,13 +6,17 @@
 #include "db/CampaignStore.h"
 #include "db/SampleBlocks.h"
 #include "db/SqlValues.h"
+#include "db/StoreBackend.h"
 
 namespace driftlab::db {
 namespace {
 
 QSqlQuery select(const QSqlDatabase& db, const QString& sql, qint64 id) {
     QSqlQuery q(db);
-    q.setForwardOnly(true);
+    // Forward-only is SQLite's cheap path; Qt's PostgreSQL driver then streams
+    // rows one by one and loses them when the next query (the nested reads of
+    // a run) starts, so there the whole (small) result is fetched at once.
+    q.setForwardOnly(backendOf(db) == StoreBackend::Sqlite);
     if (!q.prepare(sql)) throw q.lastError().text();
     q.addBindValue(id);
     if (!q.exec()) throw q.lastError().text();

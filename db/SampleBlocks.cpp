@@ -142,6 +142,8 @@ void loadSampleBlocks(sqlite3* handle, qint64 runId, SampleSeries& s) {
 void loadSampleBlocks(const QSqlDatabase& db, qint64 runId, SampleSeries& s) {
     if (sqlite3* handle = sqliteHandle(db)) return loadSampleBlocks(handle, runId, s);
     QSqlQuery q(db);
+    // Streamed (a run's blocks can be large) and read to the end before the
+    // next query: Qt's PostgreSQL driver would lose unread rows otherwise.
     q.setForwardOnly(true);
     q.prepare(
         QStringLiteral("SELECT row_count, column_count, data FROM sample_block "

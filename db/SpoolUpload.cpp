@@ -12,7 +12,9 @@ namespace {
 /// A prepared statement run with `values`; throws QString on failure.
 QSqlQuery exec(QSqlDatabase& db, const QString& sql, const QVariantList& values = {}) {
     QSqlQuery q(db);
-    q.setForwardOnly(true);
+    // Not on the server: Qt's PostgreSQL driver streams a forward-only result
+    // and loses what is unread when the next query starts (CampaignLoader.cpp).
+    q.setForwardOnly(backendOf(db) == StoreBackend::Sqlite);
     if (!q.prepare(sql)) throw q.lastError().text();
     for (const QVariant& v : values) q.addBindValue(v);
     if (!q.exec()) throw q.lastError().text();

@@ -18,7 +18,7 @@ namespace {
 const QStringList kNotBuilt{"report", "batch"};
 const QStringList kBuilt{"import",   "export",   "info",   "simulate",   "fit",    "compare",
                          "diagnose", "iso230-2", "bench",  "compensate", "pushes", "controller-sim",
-                         "live",     "iso230-3", "health", "run"};
+                         "live",     "iso230-3", "health", "run",        "sync"};
 
 QJsonObject json(const CliResult& r) {
     return QJsonDocument::fromJson(r.out).object();
