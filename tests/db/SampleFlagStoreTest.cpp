@@ -121,9 +121,11 @@ TEST(SampleFlagStore, aV4StoreMigratesToV5AndReadOnlyItSimplyHasNoFlags) {
         ASSERT_TRUE(store->importCampaign(campaignWithShortedSensor(), &error))
             << qPrintable(error);
     }
-    // As a build of schema v4 left it: no sample_flag table, user_version 4.
+    // As a build of schema v4 left it: no sample_flag table (nor the later
+    // upload tables), user_version 4.
     rawSql(path,
-           {QStringLiteral("DROP TABLE sample_flag"), QStringLiteral("PRAGMA user_version = 4"),
+           {QStringLiteral("DROP TABLE sample_flag"), QStringLiteral("DROP TABLE upload_spool"),
+            QStringLiteral("DROP TABLE upload_origin"), QStringLiteral("PRAGMA user_version = 4"),
             QStringLiteral("PRAGMA journal_mode = DELETE")});
     {
         auto readOnly = CampaignStore::open(path, db::StoreAccess::ReadOnly, &error);
