@@ -150,6 +150,11 @@ void uploadRun(QSqlDatabase& spool, QSqlDatabase& server, const QString& spoolId
     report.rows += appendMissingRows(spool, server, QStringLiteral("event_log"),
                                      QStringLiteral("logged_at, level, source, message"),
                                      QStringLiteral("id"), spoolRun, serverRun);
+    // An event of a run belongs to the run's campaign, which has another id here.
+    exec(server,
+         QStringLiteral("UPDATE event_log SET campaign_id = ? WHERE run_id = ? AND campaign_id "
+                        "IS NULL"),
+         {serverCampaign, serverRun});
     report.rows += copyFlags(spool, server, spoolRun, serverRun);
     if (!server.commit()) throw server.lastError().text();
 }

@@ -8,6 +8,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QThread>
 
@@ -168,6 +169,22 @@ TEST(ServerCli, aServerRestartMidRunLosesAndDuplicatesNothing) {
     EXPECT_GE(inSpool.runs[0].samples.rowCount() + inSpool.runs[1].samples.rowCount(), 1500u);
     // Every sample, reading, motion segment on the server exactly once.
     EXPECT_EQ(onServer, inSpool);
+
+    // The runs' events too, once each, with their campaign.
+    auto eventCount = [](const QString& store, const QString& where) {
+        QString error;
+        auto opened = db::CampaignStore::open(store, db::StoreAccess::ReadOnly, &error);
+        EXPECT_TRUE(opened) << qPrintable(error);
+        QSqlQuery q(opened->database());
+        EXPECT_TRUE(q.exec(QStringLiteral("SELECT count(*) FROM event_log WHERE run_id IS NOT "
+                                          "NULL") +
+                           where));
+        return q.next() ? q.value(0).toLongLong() : -1;
+    };
+    const qint64 spoolEvents = eventCount(spool, {});
+    EXPECT_GE(spoolEvents, 2);
+    EXPECT_EQ(eventCount(url, {}), spoolEvents);
+    EXPECT_EQ(eventCount(url, QStringLiteral(" AND campaign_id IS NULL")), 0);
 
     // A later sync finds nothing left to upload.
     const CliResult sync = runCli({"sync", "--spool", spool, "--db", url, "--json"});
