@@ -128,8 +128,12 @@ std::unique_ptr<CampaignStore> CampaignStore::openOnServer(const QString& locati
     QString options = QStringLiteral("connect_timeout=5;application_name=driftlab");
     if (!url->connectOptions.isEmpty()) options += QLatin1Char(';') + url->connectOptions;
     db.setConnectOptions(options);
-    if (!db.open())
-        return fail(QStringLiteral("cannot connect (%1)").arg(db.lastError().text().trimmed()));
+    if (!db.open()) {
+        // libpq's message spans lines; the reason a command gives is one line.
+        const QString why = db.lastError().databaseText().isEmpty() ? db.lastError().text()
+                                                                    : db.lastError().databaseText();
+        return fail(QStringLiteral("cannot connect (%1)").arg(why.simplified()));
+    }
 
     if (access == StoreAccess::ReadOnly) {
         if (QString r = checkMark(db, access); !r.isEmpty()) return fail(r);

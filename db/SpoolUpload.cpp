@@ -241,7 +241,7 @@ std::optional<UploadReport> uploadSpool(CampaignStore& spool, const QString& id,
         }
     } catch (const QString& why) {
         *error = QStringLiteral("upload from %1 to %2 stopped: %3")
-                     .arg(spool.path(), server.path(), why.trimmed());
+                     .arg(spool.path(), server.path(), why.simplified());
         return std::nullopt;
     }
     return report;
