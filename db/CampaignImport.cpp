@@ -9,7 +9,7 @@
 #include "core/bundle/BundleReader.h"
 #include "db/SampleBlocks.h"
 #include "db/SqlValues.h"
-#include "db/SqliteStatement.h"
+#include "db/StoreBackend.h"
 
 namespace driftlab::db {
 namespace {
@@ -29,7 +29,8 @@ public:
                    {c.name, toSql(c.nut_length_mm),
                     toSql(c.travel_mm ? std::optional(c.travel_mm->from_mm) : std::nullopt),
                     toSql(c.travel_mm ? std::optional(c.travel_mm->to_mm) : std::nullopt),
-                    jsonText(c.extra)});
+                    jsonText(c.extra)},
+                   true);
         insert(QStringLiteral("INSERT INTO machine VALUES (?, ?, ?, ?, ?)"),
                {m_campaignId, text(c.machine.name), text(c.machine.axis),
                 text(c.machine.controller), jsonText(c.machine.extra)});
@@ -75,10 +76,10 @@ public:
                 {m_campaignId, run.id, int(r), toString(run.kind), toSql(run.feed_mm_min),
                  toSql(run.range_mm ? std::optional(run.range_mm->from_mm) : std::nullopt),
                  toSql(run.range_mm ? std::optional(run.range_mm->to_mm) : std::nullopt),
-                 text(run.description), jsonText(run.extra)}));
+                 text(run.description), jsonText(run.extra)},
+                true));
         }
-        m_samples = std::make_unique<SampleBlockWriter>(sqliteHandle(m_db), c.sample_columns.size(),
-                                                        m_runIds);
+        m_samples = std::make_unique<SampleBlockWriter>(m_db, c.sample_columns.size(), m_runIds);
     }
 
     void row(std::size_t runIndex, double time_s, const double* values) override {
@@ -107,12 +108,13 @@ public:
     }
 
 private:
-    qint64 insert(const QString& sql, const QVariantList& values) {
+    /// Runs one INSERT; returns the new row's id when `returnsId`.
+    qint64 insert(const QString& sql, const QVariantList& values, bool returnsId = false) {
         QSqlQuery q(m_db);
         if (!q.prepare(sql)) throw QStringLiteral("prepare failed: ") + q.lastError().text();
         for (const QVariant& v : values) q.addBindValue(v);
         if (!q.exec()) throw q.lastError().text();
-        return q.lastInsertId().toLongLong();
+        return returnsId ? insertedRowId(m_db, q) : 0;
     }
 
     QSqlDatabase& m_db;
@@ -136,8 +138,9 @@ QString located(const BundleSource& source, BundleError e) {
 
 }  // namespace
 
-std::optional<qint64> CampaignStore::importCampaign(const Campaign& c, QString* error,
-                                                    const std::function<bool(double)>& progress) {
+std::optional<qint64> CampaignStore::importCampaign(
+    const Campaign& c, QString* error, const std::function<bool(double)>& progress,
+    const std::function<void(qint64 campaignId)>& beforeCommit) {
     if (!m_db.transaction()) {
         *error = QStringLiteral("cannot start a transaction: ") + m_db.lastError().text();
         return std::nullopt;
@@ -159,6 +162,7 @@ std::optional<qint64> CampaignStore::importCampaign(const Campaign& c, QString* 
             }
         }
         const qint64 id = writer.finish(c, {});
+        if (beforeCommit) beforeCommit(id);
         if (!m_db.commit()) throw QStringLiteral("commit failed: ") + m_db.lastError().text();
         if (progress) progress(1.0);
         return id;

@@ -6,14 +6,17 @@
 #include "db/CampaignStore.h"
 #include "db/SampleBlocks.h"
 #include "db/SqlValues.h"
-#include "db/SqliteStatement.h"
+#include "db/StoreBackend.h"
 
 namespace driftlab::db {
 namespace {
 
 QSqlQuery select(const QSqlDatabase& db, const QString& sql, qint64 id) {
     QSqlQuery q(db);
-    q.setForwardOnly(true);
+    // Forward-only is SQLite's cheap path; Qt's PostgreSQL driver then streams
+    // rows one by one and loses them when the next query (the nested reads of
+    // a run) starts, so there the whole (small) result is fetched at once.
+    q.setForwardOnly(backendOf(db) == StoreBackend::Sqlite);
     if (!q.prepare(sql)) throw q.lastError().text();
     q.addBindValue(id);
     if (!q.exec()) throw q.lastError().text();
@@ -100,7 +103,6 @@ std::optional<Campaign> CampaignStore::loadCampaign(qint64 id, QString* error) c
                 "SELECT id, name, kind, feed_mm_min, range_from_mm, range_to_mm, description, "
                 "extra_json FROM run WHERE campaign_id = ? ORDER BY ordinal"),
             id);
-        sqlite3* handle = sqliteHandle(m_db);
         while (q.next()) {
             Run run;
             const qint64 runId = q.value(0).toLongLong();
@@ -133,7 +135,7 @@ std::optional<Campaign> CampaignStore::loadCampaign(qint64 id, QString* error) c
                      p.value(4).toDouble()});
 
             run.samples.columns = c.sample_columns;
-            loadSampleBlocks(handle, runId, run.samples);
+            loadSampleBlocks(m_db, runId, run.samples);
             c.runs.push_back(std::move(run));
         }
         return c;

@@ -4,7 +4,6 @@
 #include <unistd.h>
 #include <cerrno>
 
-#include <QAtomicInteger>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -16,15 +15,11 @@
 #include "db/SchemaMigrations.h"
 #include "db/SqlValues.h"
 #include "db/SqliteStatement.h"
+#include "db/StoreBackend.h"
 #include "db/StoreInspection.h"
 
 namespace driftlab::db {
 namespace {
-
-QString nextConnectionName() {
-    static QAtomicInteger<int> counter;
-    return QStringLiteral("driftlab-store-%1").arg(counter.fetchAndAddRelaxed(1));
-}
 
 /// Runs one statement; returns SQLite's complaint, empty on success. `value`
 /// receives the first column of the first row.
@@ -109,6 +104,7 @@ QString reserveTemporaryFile(const QString& path, QString* why) {
 
 std::unique_ptr<CampaignStore> CampaignStore::open(const QString& path, StoreAccess access,
                                                    QString* error) {
+    if (isServerStoreUrl(path)) return openOnServer(path, access, error);
     QString temporaryPath;
     QSqlDatabase db;
     auto fail = [&](const QString& why) -> std::unique_ptr<CampaignStore> {
@@ -142,7 +138,7 @@ std::unique_ptr<CampaignStore> CampaignStore::open(const QString& path, StoreAcc
         if (QString r = schemaRefusal(info, access); !r.isEmpty()) return fail(r);
     }
 
-    db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), nextConnectionName());
+    db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), newConnectionName());
     if (access == StoreAccess::ReadOnly) {
         const std::optional<bool> immutable = needsImmutableRead(path, info.walMode, &why);
         if (!immutable) return fail(why);
@@ -184,7 +180,8 @@ std::unique_ptr<CampaignStore> CampaignStore::open(const QString& path, StoreAcc
 void CampaignStore::close() {
     if (!m_db.isValid()) return;
     const QString name = m_db.connectionName();
-    if (m_access != StoreAccess::ReadOnly && m_db.isOpen()) {
+    if (m_access != StoreAccess::ReadOnly && m_db.isOpen() &&
+        backendOf(m_db) == StoreBackend::Sqlite) {
         // Between writers the store rests in rollback-journal mode. In WAL mode
         // every reader needs a -shm beside the file: a read-only connection
         // creates -wal and -shm where it may and leaves them behind (it cannot

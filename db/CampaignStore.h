@@ -3,7 +3,10 @@
 // holding campaigns, their runs and data, and what DriftLab derives from them
 // (DESIGN.md section 3). It marks itself with an application_id, never writes
 // into another application's file, and is read with read-only connections by
-// the commands that only read.
+// the commands that only read. The same store can live in a database on a
+// PostgreSQL server, named by a postgresql://USER@HOST[:PORT]/DB URL (the
+// lab's shared store, docs/lab-store.md): same schema version, marked by a
+// driftlab_store table (ServerStore.cpp).
 
 #include <QSqlDatabase>
 #include <QString>
@@ -46,6 +49,9 @@ public:
     /// Opens the store at `path` as `access` says, after checking read-only that
     /// the file is a DriftLab store (or, for writing, an empty database). Returns
     /// nullptr and sets `error` ("PATH: why") on failure; the file is then untouched.
+    /// A postgresql:// URL opens a server store: its database must exist (the
+    /// server's administrator creates it); an empty one becomes a store when
+    /// opened for writing, one holding anything else is refused.
     static std::unique_ptr<CampaignStore> open(const QString& path, StoreAccess access,
                                                QString* error);
     /// Closes the store; a new store that was not published is deleted.
@@ -55,8 +61,11 @@ public:
 
     /// Stores a whole campaign in one transaction: on any error (or when
     /// `progress` returns false) nothing is stored. Returns the campaign id.
-    std::optional<qint64> importCampaign(const Campaign& campaign, QString* error,
-                                         const std::function<bool(double)>& progress = {});
+    /// `beforeCommit` (given the new id) writes what must be stored with the
+    /// campaign in the same transaction; it throws QString to refuse.
+    std::optional<qint64> importCampaign(
+        const Campaign& campaign, QString* error, const std::function<bool(double)>& progress = {},
+        const std::function<void(qint64 campaignId)>& beforeCommit = {});
     /// Reads a campaign back exactly as it was imported.
     std::optional<Campaign> loadCampaign(qint64 id, QString* error) const;
     std::vector<CampaignSummary> listCampaigns() const;
@@ -73,6 +82,8 @@ public:
     /// The path the store was opened with (also for a new one not yet published).
     QString path() const { return m_path; }
     StoreAccess access() const { return m_access; }
+    /// Whether the store is on a PostgreSQL server rather than in a SQLite file.
+    bool isServer() const;
 
 private:
     CampaignStore(QSqlDatabase db, QString path, StoreAccess access, QString temporaryPath)
@@ -80,6 +91,8 @@ private:
           m_path(std::move(path)),
           m_access(access),
           m_temporaryPath(std::move(temporaryPath)) {}
+    static std::unique_ptr<CampaignStore> openOnServer(const QString& url, StoreAccess access,
+                                                       QString* error);
     void close();
 
     QSqlDatabase m_db;

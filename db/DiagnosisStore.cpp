@@ -4,6 +4,8 @@
 #include <QSqlError>
 #include <QSqlQuery>
 
+#include "db/StoreBackend.h"
+
 namespace driftlab::db {
 
 std::optional<qint64> storeDiagnosis(CampaignStore& store, qint64 campaignId,
@@ -24,7 +26,7 @@ std::optional<qint64> storeDiagnosis(CampaignStore& store, qint64 campaignId,
                      .arg(q.lastError().text());
         return std::nullopt;
     }
-    return q.lastInsertId().toLongLong();
+    return insertedRowId(store.database(), q);
 }
 
 bool setAdoptedFit(CampaignStore& store, qint64 diagnosisId, qint64 fitId, QString* error) {

@@ -5,6 +5,8 @@
 #include <QSqlError>
 #include <QSqlQuery>
 
+#include "db/StoreBackend.h"
+
 namespace driftlab::db {
 namespace {
 
@@ -34,7 +36,7 @@ std::optional<qint64> storeModelFit(CampaignStore& store, qint64 campaignId,
                      .arg(q.lastError().text());
         return std::nullopt;
     }
-    return q.lastInsertId().toLongLong();
+    return insertedRowId(store.database(), q);
 }
 
 std::vector<ModelFitRecord> modelFits(CampaignStore& store, qint64 campaignId) {

@@ -4,6 +4,8 @@
 #include <QSqlError>
 #include <QSqlQuery>
 
+#include "db/StoreBackend.h"
+
 namespace driftlab::db {
 namespace {
 
@@ -35,7 +37,7 @@ std::optional<qint64> storePush(CampaignStore& store, const PushRecord& push, QS
                      .arg(store.path(), push.controller_url, q.lastError().text());
         return std::nullopt;
     }
-    return q.lastInsertId().toLongLong();
+    return insertedRowId(store.database(), q);
 }
 
 std::optional<std::vector<PushRecord>> pushHistory(CampaignStore& store,

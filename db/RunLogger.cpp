@@ -33,6 +33,16 @@ bool failWith(QString* error, const QString& why) {
     return false;
 }
 
+/// Live logging uses the sqlite3 C API (one synchronous commit a second); a
+/// server store gets its runs through the spool and the uploader instead.
+bool refuseServerStore(CampaignStore& store, QString* error) {
+    if (!store.isServer()) return false;
+    failWith(error, QStringLiteral("%1: runs are logged into a local SQLite spool and uploaded "
+                                   "to a server store (docs/lab-store.md), not logged into it")
+                        .arg(store.path()));
+    return true;
+}
+
 }  // namespace
 
 double LoggedRunState::end_s() const {
@@ -79,6 +89,7 @@ bool RunLogger::start(QString* error) {
 
 std::unique_ptr<RunLogger> RunLogger::begin(CampaignStore& store, qint64 campaignId,
                                             const RunHeader& h, QString* error) {
+    if (refuseServerStore(store, error)) return nullptr;
     QSqlDatabase& db = store.database();
     qint64 runId = 0;
     std::size_t columns = 0;
@@ -109,6 +120,7 @@ std::unique_ptr<RunLogger> RunLogger::begin(CampaignStore& store, qint64 campaig
 }
 
 std::unique_ptr<RunLogger> RunLogger::resume(CampaignStore& store, qint64 runId, QString* error) {
+    if (refuseServerStore(store, error)) return nullptr;
     const auto state = loggedRunState(store, runId, error);
     if (!state) return nullptr;
     if (state->status == QLatin1String("complete")) {

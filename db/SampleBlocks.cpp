@@ -1,23 +1,65 @@
 #include "db/SampleBlocks.h"
 
+#include <QSqlError>
 #include <QtEndian>
 #include <cmath>
 #include <cstring>
 
 namespace driftlab::db {
+namespace {
+
+const char* const kInsertSql =
+    "INSERT INTO sample_block (run_id, first_t, last_t, row_count, column_count, "
+    "present_count, data) VALUES (?, ?, ?, ?, ?, ?, ?)";
+
+/// Appends one stored block to `s` after checking that its size fits its shape.
+void appendBlock(qint64 runId, std::size_t rows, std::size_t stored, const char* data,
+                 std::size_t bytes, SampleSeries& s) {
+    const std::size_t columns = s.columns.size();
+    if (stored != columns || bytes != rows * (columns + 1) * sizeof(double))
+        throw QStringLiteral(
+            "run %1: a sample block of %2 bytes does not hold %3 rows of %4 "
+            "columns (damaged store?)")
+            .arg(runId)
+            .arg(bytes)
+            .arg(rows)
+            .arg(columns);
+    auto append = [&](std::vector<double>& to, std::size_t slice) {
+        const std::size_t old = to.size();
+        to.resize(old + rows);
+        std::memcpy(to.data() + old, data + slice * rows * sizeof(double), rows * sizeof(double));
+    };
+    append(s.time_s, 0);
+    for (std::size_t k = 0; k < columns; ++k) append(s.values[k], k + 1);
+}
+
+}  // namespace
 
 static_assert(Q_BYTE_ORDER == Q_LITTLE_ENDIAN,
               "sample blocks are float64 little-endian; add byte swapping for this platform");
 
 SampleBlockWriter::SampleBlockWriter(sqlite3* handle, std::size_t columnCount,
                                      std::vector<qint64> runIds)
-    : m_insert(handle,
-               "INSERT INTO sample_block (run_id, first_t, last_t, row_count, column_count, "
-               "present_count, data) VALUES (?, ?, ?, ?, ?, ?, ?)"),
+    : m_insert(handle, kInsertSql),
       m_columns(columnCount),
       m_runIds(std::move(runIds)),
       m_pending(m_runIds.size()) {
     if (!m_insert.ok()) throw m_insert.error();
+}
+
+SampleBlockWriter::SampleBlockWriter(QSqlDatabase& db, std::size_t columnCount,
+                                     std::vector<qint64> runIds)
+    : m_insert(sqliteHandle(db), kInsertSql),
+      m_columns(columnCount),
+      m_runIds(std::move(runIds)),
+      m_pending(m_runIds.size()) {
+    if (sqliteHandle(db)) {
+        if (!m_insert.ok()) throw m_insert.error();
+        return;
+    }
+    m_serverInsert.emplace(db);
+    if (!m_serverInsert->prepare(QString::fromLatin1(kInsertSql)))
+        throw m_serverInsert->lastError().text();
 }
 
 void SampleBlockWriter::append(std::size_t runIndex, double time_s, const double* values) {
@@ -39,19 +81,39 @@ void SampleBlockWriter::flush() {
 
 void SampleBlockWriter::write(std::size_t runIndex) {
     Pending& p = m_pending[runIndex];
-    writeSampleBlock(m_insert, m_runIds[runIndex], p.time_s.data(), p.time_s.size(),
-                     p.values.data(), kRowsPerBlock, m_columns, p.present, m_blob);
+    if (m_serverInsert) {
+        const std::size_t rows = p.time_s.size();
+        packSampleBlock(p.time_s.data(), rows, p.values.data(), kRowsPerBlock, m_columns, m_blob);
+        QSqlQuery& q = *m_serverInsert;
+        q.bindValue(0, m_runIds[runIndex]);
+        q.bindValue(1, p.time_s.front());
+        q.bindValue(2, p.time_s.back());
+        q.bindValue(3, qint64(rows));
+        q.bindValue(4, qint64(m_columns));
+        q.bindValue(5, p.present);
+        q.bindValue(6, QByteArray(reinterpret_cast<const char*>(m_blob.data()),
+                                  qsizetype(m_blob.size() * sizeof(double))));
+        if (!q.exec()) throw q.lastError().text();
+    } else {
+        writeSampleBlock(m_insert, m_runIds[runIndex], p.time_s.data(), p.time_s.size(),
+                         p.values.data(), kRowsPerBlock, m_columns, p.present, m_blob);
+    }
     p.time_s.clear();
     p.present = 0;
+}
+
+void packSampleBlock(const double* time_s, std::size_t rows, const double* values,
+                     std::size_t stride, std::size_t columns, std::vector<double>& blob) {
+    blob.resize(rows * (columns + 1));
+    std::memcpy(blob.data(), time_s, rows * sizeof(double));
+    for (std::size_t k = 0; k < columns; ++k)
+        std::memcpy(blob.data() + (k + 1) * rows, values + k * stride, rows * sizeof(double));
 }
 
 void writeSampleBlock(SqliteStatement& insert, qint64 runId, const double* time_s, std::size_t rows,
                       const double* values, std::size_t stride, std::size_t columns, qint64 present,
                       std::vector<double>& blob) {
-    blob.resize(rows * (columns + 1));
-    std::memcpy(blob.data(), time_s, rows * sizeof(double));
-    for (std::size_t k = 0; k < columns; ++k)
-        std::memcpy(blob.data() + (k + 1) * rows, values + k * stride, rows * sizeof(double));
+    packSampleBlock(time_s, rows, values, stride, columns, blob);
     insert.bind(1, runId);
     insert.bind(2, time_s[0]);
     insert.bind(3, time_s[rows - 1]);
@@ -68,31 +130,34 @@ void loadSampleBlocks(sqlite3* handle, qint64 runId, SampleSeries& s) {
                       "WHERE run_id = ? ORDER BY first_t");
     if (!q.ok()) throw q.error();
     q.bind(1, runId);
-    const std::size_t columns = s.columns.size();
-    s.values.assign(columns, {});
-    while (q.nextRow()) {
-        const auto rows = std::size_t(sqlite3_column_int64(q.get(), 0));
-        const auto stored = std::size_t(sqlite3_column_int64(q.get(), 1));
-        const auto* data = static_cast<const char*>(sqlite3_column_blob(q.get(), 2));
-        const auto bytes = std::size_t(sqlite3_column_bytes(q.get(), 2));
-        if (stored != columns || bytes != rows * (columns + 1) * sizeof(double))
-            throw QStringLiteral(
-                "run %1: a sample block of %2 bytes does not hold %3 rows of %4 "
-                "columns (damaged store?)")
-                .arg(runId)
-                .arg(bytes)
-                .arg(rows)
-                .arg(columns);
-        auto append = [&](std::vector<double>& to, std::size_t slice) {
-            const std::size_t old = to.size();
-            to.resize(old + rows);
-            std::memcpy(to.data() + old, data + slice * rows * sizeof(double),
-                        rows * sizeof(double));
-        };
-        append(s.time_s, 0);
-        for (std::size_t k = 0; k < columns; ++k) append(s.values[k], k + 1);
-    }
+    s.values.assign(s.columns.size(), {});
+    while (q.nextRow())
+        appendBlock(runId, std::size_t(sqlite3_column_int64(q.get(), 0)),
+                    std::size_t(sqlite3_column_int64(q.get(), 1)),
+                    static_cast<const char*>(sqlite3_column_blob(q.get(), 2)),
+                    std::size_t(sqlite3_column_bytes(q.get(), 2)), s);
     if (q.failed()) throw q.error();
+}
+
+void loadSampleBlocks(const QSqlDatabase& db, qint64 runId, SampleSeries& s) {
+    if (sqlite3* handle = sqliteHandle(db)) return loadSampleBlocks(handle, runId, s);
+    QSqlQuery q(db);
+    // Streamed (a run's blocks can be large) and read to the end before the
+    // next query: Qt's PostgreSQL driver would lose unread rows otherwise.
+    q.setForwardOnly(true);
+    q.prepare(
+        QStringLiteral("SELECT row_count, column_count, data FROM sample_block "
+                       "WHERE run_id = ? ORDER BY first_t"));
+    q.addBindValue(runId);
+    if (!q.exec()) throw q.lastError().text();
+    s.values.assign(s.columns.size(), {});
+    while (q.next()) {
+        const QByteArray data = q.value(2).toByteArray();
+        appendBlock(runId, std::size_t(q.value(0).toLongLong()),
+                    std::size_t(q.value(1).toLongLong()), data.constData(),
+                    std::size_t(data.size()), s);
+    }
+    if (q.lastError().isValid()) throw q.lastError().text();
 }
 
 void moveSampleRowsIntoBlocks(sqlite3* handle) {

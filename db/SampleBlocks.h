@@ -8,10 +8,14 @@
 // BLOB layout (float64, little-endian): row_count times, then for each sample
 // column in channel.column_ordinal order its row_count values; NaN is a
 // missing sample. Column-major, so one channel over a time range is one
-// contiguous slice (what live plots and per-channel queries read).
+// contiguous slice (what live plots and per-channel queries read). The same
+// bytes are a BLOB on SQLite and a BYTEA on PostgreSQL.
 
 #include <sqlite3.h>
+#include <QSqlDatabase>
+#include <QSqlQuery>
 #include <QString>
+#include <optional>
 #include <vector>
 
 #include "core/domain/Run.h"
@@ -27,6 +31,9 @@ constexpr std::size_t kRowsPerBlock = 2048;
 class SampleBlockWriter {
 public:
     SampleBlockWriter(sqlite3* handle, std::size_t columnCount, std::vector<qint64> runIds);
+    /// Into the store's connection: through the sqlite3 C API on SQLite (the
+    /// hot path), through Qt SQL on a server.
+    SampleBlockWriter(QSqlDatabase& db, std::size_t columnCount, std::vector<qint64> runIds);
 
     void append(std::size_t runIndex, double time_s, const double* values);
     /// Writes every partly filled block.
@@ -41,6 +48,7 @@ private:
     void write(std::size_t runIndex);
 
     SqliteStatement m_insert;
+    std::optional<QSqlQuery> m_serverInsert;  ///< set when the store is not SQLite
     std::size_t m_columns;
     std::vector<qint64> m_runIds;
     std::vector<Pending> m_pending;
@@ -54,9 +62,15 @@ void writeSampleBlock(SqliteStatement& insert, qint64 runId, const double* time_
                       const double* values, std::size_t stride, std::size_t columns, qint64 present,
                       std::vector<double>& scratch);
 
+/// The BLOB of one block: times, then each column (see the layout above).
+void packSampleBlock(const double* time_s, std::size_t rows, const double* values,
+                     std::size_t stride, std::size_t columns, std::vector<double>& blob);
+
 /// Reads the samples of a run in time order into `series`, whose `columns`
 /// are set; throws QString on a database error or a malformed block.
 void loadSampleBlocks(sqlite3* handle, qint64 runId, SampleSeries& series);
+/// The same from any store connection (Qt SQL where it is not SQLite).
+void loadSampleBlocks(const QSqlDatabase& db, qint64 runId, SampleSeries& series);
 
 /// Schema v2 → v3: moves the rows of the old one-value-per-row `sample` table
 /// into blocks and drops it. Runs inside the migration's transaction; throws

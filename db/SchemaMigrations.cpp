@@ -7,6 +7,7 @@
 
 #include "db/SampleBlocks.h"
 #include "db/SqliteStatement.h"
+#include "db/StoreBackend.h"
 
 // The migrations live in a static library; its resources must be registered
 // explicitly (from the global namespace, as Q_INIT_RESOURCE requires).
@@ -17,12 +18,22 @@ static void registerMigrationResources() {
 namespace driftlab::db {
 namespace {
 
-QStringList migrationFiles() {
+QStringList migrationFiles(StoreBackend backend) {
     static const bool registered = (registerMigrationResources(), true);
     Q_UNUSED(registered);
     // Named NNNN_what.sql; the number is the version the migration produces.
-    return QDir(QStringLiteral(":/driftlab/migrations"))
+    // Both back ends have the same numbers: a store says the same schema
+    // version wherever it lives.
+    return QDir(migrationFolder(backend))
         .entryList({QStringLiteral("*.sql")}, QDir::Files, QDir::Name);
+}
+
+/// Sets the schema version inside the migration's transaction: SQLite keeps it
+/// in the file header, a server store in its mark (ServerStore.cpp).
+QString versionStatement(StoreBackend backend, int version) {
+    return backend == StoreBackend::Postgres
+               ? QStringLiteral("UPDATE driftlab_store SET schema_version = %1").arg(version)
+               : QStringLiteral("PRAGMA user_version = %1").arg(version);
 }
 
 /// Splits a migration into statements. Statements end with ';' at the end of a
@@ -45,7 +56,11 @@ QStringList statements(const QString& sql) {
 }  // namespace
 
 int latestSchemaVersion() {
-    return int(migrationFiles().size());
+    return int(migrationFiles(StoreBackend::Sqlite).size());
+}
+
+int latestSchemaVersion(StoreBackend backend) {
+    return int(migrationFiles(backend).size());
 }
 
 int oldestReadableSchemaVersion() {
@@ -54,11 +69,15 @@ int oldestReadableSchemaVersion() {
 
 int schemaVersion(QSqlDatabase& db) {
     QSqlQuery q(db);
-    return q.exec(QStringLiteral("PRAGMA user_version")) && q.next() ? q.value(0).toInt() : -1;
+    const QString sql = backendOf(db) == StoreBackend::Postgres
+                            ? QStringLiteral("SELECT schema_version FROM driftlab_store")
+                            : QStringLiteral("PRAGMA user_version");
+    return q.exec(sql) && q.next() ? q.value(0).toInt() : -1;
 }
 
 bool migrate(QSqlDatabase& db, QString* error, int target) {
-    const QStringList files = migrationFiles();
+    const StoreBackend backend = backendOf(db);
+    const QStringList files = migrationFiles(backend);
     if (target < 0) target = int(files.size());
     int version = schemaVersion(db);
     if (version > int(files.size())) {
@@ -70,7 +89,7 @@ bool migrate(QSqlDatabase& db, QString* error, int target) {
     }
     for (; version < target; ++version) {
         const QString name = files[version];
-        QFile file(QStringLiteral(":/driftlab/migrations/") + name);
+        QFile file(migrationFolder(backend) + QLatin1Char('/') + name);
         file.open(QIODevice::ReadOnly);
         if (!db.transaction()) {
             *error = QStringLiteral("migration %1: %2").arg(name, db.lastError().text());
@@ -85,7 +104,7 @@ bool migrate(QSqlDatabase& db, QString* error, int target) {
             }
         }
         // What SQL alone cannot do: v3 packs the old per-value sample rows into blocks.
-        if (version + 1 == 3) {
+        if (version + 1 == 3 && backend == StoreBackend::Sqlite) {
             try {
                 moveSampleRowsIntoBlocks(sqliteHandle(db));
             } catch (const QString& why) {
@@ -94,7 +113,7 @@ bool migrate(QSqlDatabase& db, QString* error, int target) {
                 return false;
             }
         }
-        if (!q.exec(QStringLiteral("PRAGMA user_version = %1").arg(version + 1))) {
+        if (!q.exec(versionStatement(backend, version + 1))) {
             *error = QStringLiteral("migration %1 failed: %2").arg(name, q.lastError().text());
             db.rollback();
             return false;

@@ -23,7 +23,8 @@ namespace driftlab::cli {
 QJsonObject importFigures(int megabytes, int repetitions);
 /// PushThroughput.cpp: `pushes` pushes of a 256-point table to the simulated controller.
 QJsonObject pushFigures(int pushes);
-QJsonObject loggingFigures(int repetitions);
+/// LoggingThroughput.cpp; with `serverUrl`, also the upload rate into that server store.
+QJsonObject loggingFigures(int repetitions, const QString& serverUrl = {});
 void printLoggingLine(const QJsonObject& figures);
 /// LiveReadLatency.cpp: device reading → reader of the live read path, µs.
 QJsonObject liveReadFigures(int readings);
@@ -164,7 +165,12 @@ int benchCommand(const QStringList& args) {
         QStringLiteral("Measure only this figure: push, online, logging, live-read, plot, "
                        "report, batch."),
         QStringLiteral("FIGURE")};
-    parseArguments(parser, args, {repeat, noPython, importMb, pushes, only});
+    const QCommandLineOption server{
+        QStringLiteral("db"),
+        QStringLiteral("With --only logging: also the upload rate into this server store "
+                       "(postgresql://USER@HOST[:PORT]/DB; it receives the benchmark's runs)."),
+        QStringLiteral("URL")};
+    parseArguments(parser, args, {repeat, noPython, importMb, pushes, only, server});
     const int pushCount = parser.value(pushes).toInt();
     if (parser.value(only) == QLatin1String("push")) {
         const QJsonObject figures = pushFigures(std::max(1, pushCount));
@@ -176,7 +182,8 @@ int benchCommand(const QStringList& args) {
         return 0;
     }
     if (parser.value(only) == QLatin1String("logging")) {
-        const QJsonObject figures = loggingFigures(std::max(1, parser.value(repeat).toInt()));
+        const QJsonObject figures =
+            loggingFigures(std::max(1, parser.value(repeat).toInt()), parser.value(server));
         endProgressLine();
         if (parser.isSet(QStringLiteral("json")))
             printJson(figures);

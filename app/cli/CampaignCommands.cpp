@@ -7,13 +7,16 @@
 #include "core/bundle/BundleWriter.h"
 #include "db/CampaignImport.h"
 #include "db/CampaignStore.h"
+#include "db/StoreBackend.h"
 
 namespace driftlab::cli {
 namespace {
 
-const QCommandLineOption kDbOption{QStringLiteral("db"),
-                                   QStringLiteral("Campaign database (SQLite file)."),
-                                   QStringLiteral("FILE")};
+const QCommandLineOption kDbOption{
+    QStringLiteral("db"),
+    QStringLiteral("Campaign store: a SQLite file, or postgresql://USER@HOST[:PORT]/DB "
+                   "for a store on a PostgreSQL server."),
+    QStringLiteral("FILE")};
 
 /// The --db store to import into; a missing one is created, visible only once published.
 std::unique_ptr<db::CampaignStore> openStore(const QCommandLineParser& parser) {
@@ -46,7 +49,7 @@ int importCommand(const QStringList& args) {
         *source, [](double f) { return printProgress(QStringLiteral("checking bundle"), f); });
     printWarnings(checked.warnings);
     if (!checked.ok()) throw CliError(checked.error);
-    if (!parser.isSet(again) && QFileInfo::exists(dbPath)) {
+    if (!parser.isSet(again) && (db::isServerStoreUrl(dbPath) || QFileInfo::exists(dbPath))) {
         QString error;
         // A store that cannot be read here is refused below, with the writer's reason.
         if (auto reader = db::CampaignStore::open(dbPath, db::StoreAccess::ReadOnly, &error))

@@ -82,7 +82,9 @@ QString bundleDescription() {
 }
 
 QList<QCommandLineOption> campaignSourceOptions() {
-    return {{QStringLiteral("db"), QStringLiteral("Campaign database (SQLite file)."),
+    return {{QStringLiteral("db"),
+             QStringLiteral("Campaign store: a SQLite file, or postgresql://USER@HOST[:PORT]/DB "
+                            "for a store on a PostgreSQL server."),
              QStringLiteral("FILE")},
             {QStringLiteral("campaign"), QStringLiteral("Campaign id in the database."),
              QStringLiteral("ID")}};

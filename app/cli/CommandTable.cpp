@@ -23,6 +23,7 @@ int runCommand(const QStringList& args);
 int reportCommand(const QStringList& args);
 int batchCommand(const QStringList& args);
 int batchItemCommand(const QStringList& args);
+int syncCommand(const QStringList& args);
 
 namespace {
 
@@ -114,11 +115,15 @@ const std::vector<Command>& commands() {
                         "frozen, spikes, rate of change, drift between redundant sensors; per "
                         "run and channel, how many samples and when.")},
         {QStringLiteral("run"), runCommand,
-         QStringLiteral("run --procedure FILE --rig sim|modbus://HOST:PORT --db FILE "
-                        "[--speedup N] [--resume RUN]"),
+         QStringLiteral("run --procedure FILE --rig sim|modbus://HOST:PORT --db FILE|URL "
+                        "[--spool FILE] [--speedup N] [--resume RUN]"),
          QStringLiteral("Run a test procedure (ISO 230-2, ISO 230-3, ETVE, spindle, moving "
                         "states) on a rig and log it live into the store; prints the campaign "
-                        "id. Ctrl-C keeps what was logged; --resume continues the run.")},
+                        "id. Ctrl-C keeps what was logged; --resume continues the run. With a "
+                        "postgresql:// --db it logs into a local spool and uploads it.")},
+        {QStringLiteral("sync"), syncCommand, QStringLiteral("sync --db URL [--spool FILE]"),
+         QStringLiteral("Upload what a rig's spool holds and the server store does not: runs "
+                        "logged while the server was away (docs/lab-store.md).")},
         {QStringLiteral("report"), reportCommand,
          QStringLiteral("report BUNDLE --pdf FILE | --html DIR | --csv DIR [--run R] "
                         "[--operator NAME]"),

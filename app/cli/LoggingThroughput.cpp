@@ -4,15 +4,20 @@
 // bulk insert of the same rows (one prepared INSERT per row, one
 // transaction, no durability between commits) into a plain table in the
 // same folder, in the same process. Figures in samples (values) per second.
+// Given a server store, also the rate at which the logged run goes up to it
+// (db/SpoolUpload.h): a rig logging into a server logs into its spool at the
+// first rate and is uploaded at this one (docs/lab-store.md).
 #include <sqlite3.h>
 
 #include <QElapsedTimer>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <cmath>
 
 #include "app/cli/CliCommon.h"
 #include "core/rig/CampaignSimulator.h"
 #include "db/RunLogger.h"
+#include "db/SpoolUpload.h"
 
 namespace driftlab::cli {
 namespace {
@@ -94,28 +99,53 @@ double bareSqliteSeconds(const QString& path, const std::vector<double>& rows,
     return timer.nsecsElapsed() * 1e-9;
 }
 
+/// Seconds to upload the spool at `path` (one logged run) to the server store.
+double uploadSeconds(const QString& path, const QString& serverUrl) {
+    QString error;
+    std::optional<QString> id;
+    if (auto spool = db::CampaignStore::open(path, db::StoreAccess::ReadWrite, &error))
+        id = db::ensureSpoolId(*spool, &error);
+    auto spool = db::CampaignStore::open(path, db::StoreAccess::ReadOnly, &error);
+    auto server = db::CampaignStore::open(serverUrl, db::StoreAccess::ReadWrite, &error);
+    if (!id || !spool || !server) throw CliError(QStringLiteral("logging bench: ") + error);
+    QElapsedTimer timer;
+    timer.start();
+    if (!db::uploadSpool(*spool, *id, *server, &error))
+        throw CliError(QStringLiteral("logging bench: ") + error);
+    return timer.nsecsElapsed() * 1e-9;
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
 }  // namespace
 
-QJsonObject loggingFigures(int repetitions) {
+QJsonObject loggingFigures(int repetitions, const QString& serverUrl) {
     const std::size_t columns = rig::rigCampaignHeader(rig::RigSpec{}, true).sample_columns.size();
     const std::size_t rowCount = 1'000'000;
     const std::vector<double> rows = benchRows(rowCount, columns);
-    std::vector<double> logged, bare;
+    std::vector<double> logged, bare, uploaded;
     for (int i = 0; i < repetitions; ++i) {
         QTemporaryDir dir;
         logged.push_back(loggerSeconds(dir.filePath(QStringLiteral("log.sqlite")), rows, columns));
+        if (!serverUrl.isEmpty())
+            uploaded.push_back(
+                uploadSeconds(dir.filePath(QStringLiteral("log.sqlite")), serverUrl));
         bare.push_back(
             bareSqliteSeconds(dir.filePath(QStringLiteral("bare.sqlite")), rows, columns));
         printProgress(QStringLiteral("logging"), (i + 1.0) / repetitions);
     }
-    std::sort(logged.begin(), logged.end());
-    std::sort(bare.begin(), bare.end());
     const double samples = double(rowCount * columns);
-    const double ours = samples / logged[logged.size() / 2];
-    const double theirs = samples / bare[bare.size() / 2];
-    return {{QStringLiteral("logging_samples_per_s"), ours},
-            {QStringLiteral("logging_bare_sqlite_samples_per_s"), theirs},
-            {QStringLiteral("logging_ratio_to_bare_sqlite"), ours / theirs}};
+    const double ours = samples / median(logged);
+    const double theirs = samples / median(bare);
+    QJsonObject figures{{QStringLiteral("logging_samples_per_s"), ours},
+                        {QStringLiteral("logging_bare_sqlite_samples_per_s"), theirs},
+                        {QStringLiteral("logging_ratio_to_bare_sqlite"), ours / theirs}};
+    if (!uploaded.empty())
+        figures[QStringLiteral("logging_postgres_samples_per_s")] = samples / median(uploaded);
+    return figures;
 }
 
 void printLoggingLine(const QJsonObject& f) {
@@ -126,6 +156,11 @@ void printLoggingLine(const QJsonObject& f) {
             .arg(f[QStringLiteral("logging_bare_sqlite_samples_per_s")].toDouble() * 1e-6, 0, 'f',
                  2)
             .arg(100 * f[QStringLiteral("logging_ratio_to_bare_sqlite")].toDouble(), 0, 'f', 0));
+    if (f.contains(QStringLiteral("logging_postgres_samples_per_s")))
+        printLine(QStringLiteral("  to PostgreSQL %1 million samples/s uploaded from the spool to "
+                                 "the server store")
+                      .arg(f[QStringLiteral("logging_postgres_samples_per_s")].toDouble() * 1e-6, 0,
+                           'f', 2));
 }
 
 }  // namespace driftlab::cli

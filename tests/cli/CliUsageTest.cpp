@@ -15,9 +15,10 @@ using namespace driftlab::test;
 
 namespace {
 
-const QStringList kBuilt{"import",   "export",   "info",   "simulate",   "fit",    "compare",
-                         "diagnose", "iso230-2", "bench",  "compensate", "pushes", "controller-sim",
-                         "live",     "iso230-3", "health", "run",        "report", "batch"};
+const QStringList kBuilt{"import",  "export",         "info",     "simulate", "fit",
+                         "compare", "diagnose",       "iso230-2", "bench",    "compensate",
+                         "pushes",  "controller-sim", "live",     "iso230-3", "health",
+                         "run",     "report",         "batch",    "sync"};
 
 QJsonObject json(const CliResult& r) {
     return QJsonDocument::fromJson(r.out).object();
@@ -65,6 +66,91 @@ TEST(CliUsage, usageListsEveryCommandAsBuilt) {
     }
     EXPECT_FALSE(usage().contains("(not built yet)"));
     EXPECT_FALSE(usage().contains("\n  batch-item")) << "the batch child command is hidden";
+}
+
+TEST(CliUsage, bareCommandLineAsksForACommandOnStderr) {
+    CliResult r = runCli({});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out, QByteArray());
+    EXPECT_EQ(r.err, usage() + "\ndriftlab-cli: a command is needed\n");
+}
+
+TEST(CliUsage, misspelledCommandNamedOnLastStderrLine) {
+    CliResult r = runCli({QStringLiteral("imprt"), QStringLiteral("bundle")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out, QByteArray());
+    EXPECT_EQ(r.err,
+              usage() + "\ndriftlab-cli: unknown command 'imprt' (did you mean 'import'?)\n");
+}
+
+TEST(CliUsage, shortenedCommandSuggestsTheOneItStartsWith) {
+    CliResult r = runCli({QStringLiteral("diag")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(reason(r.err), "driftlab-cli: unknown command 'diag' (did you mean 'diagnose'?)");
+}
+
+TEST(CliUsage, unknownCommandWithNothingCloseIsNamedWithoutAGuess) {
+    CliResult r = runCli({QStringLiteral("frobnicate")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out, QByteArray());
+    EXPECT_EQ(r.err, usage() + "\ndriftlab-cli: unknown command 'frobnicate'\n");
+}
+
+TEST(CliUsage, optionBeforeTheCommandIsNamed) {
+    CliResult r = runCli({QStringLiteral("--json"), QStringLiteral("info")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(reason(r.err),
+              "driftlab-cli: unknown option '--json' (a COMMAND comes first, its options after "
+              "it)");
+}
+
+TEST(CliUsage, helpCommandPrintsCommandHelpOnStdout) {
+    CliResult r = runCli({QStringLiteral("help"), QStringLiteral("import")});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.err, QByteArray());
+    EXPECT_EQ(
+        r.out,
+        QByteArray("Usage: driftlab-cli import [options] BUNDLE\n"
+                   "Store a campaign bundle in the database (one transaction); prints the "
+                   "campaign id.\n"
+                   "Required: BUNDLE, --db FILE\n"
+                   "\n"
+                   "Options:\n"
+                   "  -h, --help   Print this help on stdout.\n"
+                   "  --json       Print the result as JSON on stdout.\n"
+                   "  --db <FILE>  Campaign store: a SQLite file, or\n"
+                   "               postgresql://USER@HOST[:PORT]/DB for a store on a PostgreSQL\n"
+                   "               server. (required)\n"
+                   "  --again      Import a bundle whose content the store already holds "
+                   "once more.\n"
+                   "\n"
+                   "Arguments:\n"
+                   "  BUNDLE       Campaign bundle: a folder or a .zip of one (campaign.json,\n"
+                   "               samples.csv, ...).\n"));
+}
+
+TEST(CliUsage, helpCommandIsTheCommandsOwnHelp) {
+    for (const QString& name : kBuilt) {
+        CliResult viaHelp = runCli({QStringLiteral("help"), name});
+        CliResult own = runCli({name, QStringLiteral("--help")});
+        EXPECT_EQ(viaHelp.exitCode, 0) << qPrintable(name);
+        EXPECT_EQ(own.exitCode, 0) << qPrintable(name);
+        EXPECT_EQ(viaHelp.out, own.out) << qPrintable(name);
+        EXPECT_EQ(own.err, QByteArray()) << qPrintable(name);
+        EXPECT_TRUE(own.out.startsWith("Usage: driftlab-cli " + name.toUtf8() + " [options]"))
+            << own.out.constData();
+    }
+}
+
+TEST(CliUsage, commandHelpSaysWhichOptionsAreRequired) {
+    const QByteArray fit = runCli({QStringLiteral("fit"), QStringLiteral("--help")}).out;
+    EXPECT_TRUE(fit.startsWith("Usage: driftlab-cli fit [options] BUNDLE\n")) << fit.constData();
+    EXPECT_TRUE(fit.contains("\nRequired: BUNDLE (or --db FILE --campaign ID), --model NAME\n"))
+        << fit.constData();
+    const QByteArray exp = runCli({QStringLiteral("export"), QStringLiteral("--help")}).out;
+    EXPECT_TRUE(exp.startsWith("Usage: driftlab-cli export [options]\n")) << exp.constData();
+    EXPECT_TRUE(exp.contains("\nRequired: --db FILE, --campaign ID, --out DIR\n"))
+        << exp.constData();
 }
 
 TEST(CliUsage, missingRequiredOptionNamesCommandAndOption) {
