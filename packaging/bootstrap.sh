@@ -2,7 +2,7 @@
 # DriftLab set-up on Debian 12: installs the packages it needs (skipping those
 # present), builds, then runs one job.
 #
-#   bash packaging/bootstrap.sh main    the main job: simulated campaigns, stored, modelled, compared, diagnosed,
+#   bash packaging/bootstrap.sh main    the main job: procedures run on the simulated rig, campaigns stored, modelled, compared, diagnosed,
 #                                       compensated and pushed to a simulated controller
 #   bash packaging/bootstrap.sh test    every test (ctest, offscreen)
 #   bash packaging/bootstrap.sh build   install and build only
@@ -64,7 +64,7 @@ push_to_simulated_controller() {
     "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --spacing 30 \
         --push "modbus://127.0.0.1:$port" --max-change-um 50
     "$cli" pushes --db "$out/driftlab.sqlite" --campaign "$id"
-    log "main job 14/15: live thermal compensation: heat-transfer fitted on S1, S3 replayed as live data, every update written to the controller's live-offset registers between cuts, scored on S3's measured thermal error"
+    log "main job 14/18: live thermal compensation: heat-transfer fitted on S1, S3 replayed as live data, every update written to the controller's live-offset registers between cuts, scored on S3's measured thermal error"
     "$cli" live --db "$out/driftlab.sqlite" --campaign "$id" --run S3 --train S1 \
         --push "modbus://127.0.0.1:$port" >"$out/live.txt"
     tail -n 3 "$out/live.txt"
@@ -77,16 +77,16 @@ run_main_job() {
     local cli=$build/app/driftlab-cli out=$build/main-job
     rm -rf "$out" && mkdir -p "$out"
     local procedures=$root/resources/procedures logged
-    log "main job 1/15: acquisition: the ISO 230-2 positioning procedure (irregular targets, 5 bidirectional cycles) run on the simulated rig and logged live into $out/driftlab.sqlite; its evaluation"
+    log "main job 1/18: acquisition: the ISO 230-2 positioning procedure (irregular targets, 5 bidirectional cycles) run on the simulated rig and logged live into $out/driftlab.sqlite; its evaluation"
     logged=$("$cli" run --procedure "$procedures/iso230-2-x-axis.json" --rig sim --db "$out/driftlab.sqlite")
     "$cli" iso230-2 --db "$out/driftlab.sqlite" --campaign "$logged" | tail -n 4
-    log "main job 2/15: acquisition: ISO 230-3 thermal distortion of the moving axis (warm-up until two passes agree within 1 µm, then cool-down) logged live; its drift evaluation and a model fitted on it"
+    log "main job 2/18: acquisition: ISO 230-3 thermal distortion of the moving axis (warm-up until two passes agree within 1 µm, then cool-down) logged live; its drift evaluation and a model fitted on it"
     logged=$("$cli" run --procedure "$procedures/iso230-3-x-axis.json" --rig sim --db "$out/driftlab.sqlite")
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$logged" | tail -n 3
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$logged" --model heat-transfer | tail -n 1
-    log "main job 3/15: simulating a five-state campaign on the built-in rig"
+    log "main job 3/18: simulating a five-state campaign on the built-in rig"
     "$cli" simulate --out "$out/campaign" --plots "$out/plots" --spindle --seed 1 >/dev/null
-    log "main job 4/15: zipping the bundle as a user mails it, importing the zip into the same store (checked, then one transaction)"
+    log "main job 4/18: zipping the bundle as a user mails it, importing the zip into the same store (checked, then one transaction)"
     (cd "$out" && zip -qr campaign.zip campaign)
     local id
     id=$("$cli" import "$out/campaign.zip" --db "$out/driftlab.sqlite")
@@ -97,40 +97,54 @@ run_main_job() {
     log "the unzipped folder is the same content: $(tail -n 1 "$out/again.err")"
     log "sensor self-diagnosis of every logged channel (open/short, frozen, spikes, rate of change)"
     "$cli" health --db "$out/driftlab.sqlite" --campaign "$id"
-    log "main job 5/15: heat-transfer model identified on S1, tested on S2-S5 (stored in the database)"
+    log "main job 5/18: heat-transfer model identified on S1, tested on S2-S5 (stored in the database)"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model heat-transfer --train S1
-    log "main job 6/15: the same with the best temperature regression (mlr)"
+    log "main job 6/18: the same with the best temperature regression (mlr)"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model mlr --train S1
-    log "main job 7/15: every model, fitted on each state and scored on every other"
+    log "main job 7/18: every model, fitted on each state and scored on every other"
     "$cli" compare --db "$out/driftlab.sqlite" --campaign "$id"
-    log "main job 8/15: a second campaign with an effect hidden in the simulated rig (forced convection), run through the procedure engine (five moving states) and logged live; the diagnosis must find it"
+    log "main job 8/18: a second campaign with an effect hidden in the simulated rig (forced convection), run through the procedure engine (five moving states) and logged live; the diagnosis must find it"
     local hidden
     hidden=$("$cli" run --procedure "$procedures/moving-states-s1-s5.json" --rig sim \
         --effect forced_convection=0.05 --db "$out/driftlab.sqlite" 2>"$out/hidden-run.err")
     "$cli" diagnose --db "$out/driftlab.sqlite" --campaign "$hidden" --plots "$out/plots/diagnosis"
-    log "main job 9/15: ISO 230-2 evaluation of S1's interferometer cycles (a moving state: its thermal drift inflates R, as the warning says)"
+    log "main job 9/18: ISO 230-2 evaluation of S1's interferometer cycles (a moving state: its thermal drift inflates R, as the warning says)"
     "$cli" iso230-2 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
-    log "main job 10/15: ISO 230-3 thermal drift of S1's targets and the spindle run's probes: maximum, when, time to stabilise"
+    log "main job 10/18: ISO 230-3 thermal drift of S1's targets and the spindle run's probes: maximum, when, time to stabilise"
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run SP1
-    log "main job 11/15: compensation tables from S1's interferometer readings for LinuxCNC and Sinumerik, in $out/compensation/"
+    log "main job 11/18: compensation tables from S1's interferometer readings for LinuxCNC and Sinumerik, in $out/compensation/"
     mkdir -p "$out/compensation"
     "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --format linuxcnc \
         --spacing 30 --out "$out/compensation/x.comp"
     "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --format sinumerik \
         --spacing 30 --out "$out/compensation/x_eec.ini" >/dev/null
-    log "main job 12/15: the same table warm: plus the heat-transfer model's thermal error (fitted on S1) at S3 after 2 h, and its straight line for Sinumerik's temperature compensation"
+    log "main job 12/18: the same table warm: plus the heat-transfer model's thermal error (fitted on S1) at S3 after 2 h, and its straight line for Sinumerik's temperature compensation"
     "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --format linuxcnc \
         --spacing 30 --max-value-um 200 --model heat-transfer --train S1 --at S3@7200 \
         --out "$out/compensation/x_warm.comp" | head -n 2
     "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --format sinumerik-temp \
         --model heat-transfer --train S1 --at S3@7200 --out "$out/compensation/x_temp_comp.spf"
-    log "main job 13/15: S1's table pushed over Modbus TCP to the simulated controller (staged, checksummed, applied, read back), then the push history"
+    log "main job 13/18: S1's table pushed over Modbus TCP to the simulated controller (staged, checksummed, applied, read back), then the push history"
     push_to_simulated_controller "$cli" "$out" "$id"
     "$cli" export --db "$out/driftlab.sqlite" --campaign "$id" --out "$out/exported" >/dev/null
-    log "main job 15/15: the desktop application (driftlab) under Xvfb at 1280x800: the demo played through the window (run on the simulated rig, fit, compare, diagnose), a screenshot of every page in $out/gui/shots"
+    mkdir -p "$out/report"
+    log "main job 15/18: the acceptance report of the hidden-effect campaign (ISO 230-2 of S1, ISO 230-3, cross-state matrix, diagnosis, compensation before/after) as PDF with vector plots, HTML and CSV in $out/report/"
+    "$cli" report --db "$out/driftlab.sqlite" --campaign "$hidden" --run S1 --operator "DriftLab main job" \
+        --pdf "$out/report/acceptance-report.pdf" --html "$out/report/html" --csv "$out/report/csv" \
+        --json >"$out/report/report.json"
+    log "report: $out/report/acceptance-report.pdf ($(grep -o '"pages": *[0-9]*' "$out/report/report.json" | grep -o '[0-9]*$') pages)"
+    log "main job 16/18: batch analysis of the bundle, its zip and every campaign of the store, two at a time in separate processes, one JSON line each in $out/batch.jsonl"
+    "$cli" batch "$out/campaign" "$out/campaign.zip" "$out/driftlab.sqlite" -j 2 \
+        --what info,iso230-2,fit >"$out/batch.jsonl"
+    cut -c 1-160 "$out/batch.jsonl"
+    log "main job 17/18: the Debian package (cpack) in $out/deb/, and its control fields"
+    (cd "$build" && cpack -G DEB -B "$out/deb" >/dev/null)
+    dpkg-deb -f "$out"/deb/driftlab_*.deb Package Version Depends | cut -c 1-200
+    log "main job 18/18: the desktop application (driftlab) under Xvfb at 1280x800: the demo played through the window (run on the simulated rig, fit, compare, diagnose), a screenshot of every page in $out/gui/shots"
     bash "$root/tests/ui/xvfb_demo.sh" "$build/app/driftlab" "$out/gui"
-    log "done: bundle $out/campaign (and .zip), database $out/driftlab.sqlite, exported back to $out/exported, plots in $out/plots, GUI screenshots in $out/gui/shots"
+    log "done: bundle $out/campaign (and .zip), database $out/driftlab.sqlite, exported back to $out/exported, plots in $out/plots, GUI screenshots in $out/gui/shots, Debian package in $out/deb"
+    log "the acceptance report is $out/report/acceptance-report.pdf (HTML: $out/report/html/index.html, CSV: $out/report/csv/)"
 }
 
 run_tests() {
