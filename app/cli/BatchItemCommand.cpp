@@ -104,7 +104,8 @@ int batchItemCommand(const QStringList& args) {
     // The models need a feed-axis run with positioning readings; a spindle or
     // ETVE campaign has none, which is no failure of the campaign.
     const bool modelled = !models::modelledRuns(campaign).isEmpty();
-    const QString noModelledRun = QStringLiteral("no feed-axis run with positioning readings");
+    const QString noModelledRun = QStringLiteral(
+        "no feed-axis run with positioning readings from a cold reference (cycle 0)");
     const std::pair<QString, std::function<QJsonValue()>> analyses[] = {
         {kAnalysisIso230_2, [&] { return iso230Result(campaign, skipped); }},
         {kAnalysisFit, [&] { return fitResult(campaign); }},

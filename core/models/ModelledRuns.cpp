@@ -1,12 +1,24 @@
 #include "core/models/ModelledRuns.h"
 
+#include <algorithm>
+
 namespace driftlab::models {
+namespace {
+
+/// A feed-axis run's thermal error is its drift from the cold reference cycle
+/// 0; an ISO 230-2 run measured warm (cycles from 1) has none to model.
+bool hasColdReference(const Run& run) {
+    return std::any_of(run.positioning.begin(), run.positioning.end(),
+                       [](const PositioningMeasurement& m) { return m.cycle == 0; });
+}
+
+}  // namespace
 
 QStringList modelledRuns(const Campaign& campaign, const QString& targetChannel) {
     QStringList ids;
     for (const Run& run : campaign.runs) {
         if (targetChannel.isEmpty()
-                ? isFeedAxisRun(run.kind) && !run.positioning.empty()
+                ? isFeedAxisRun(run.kind) && hasColdReference(run)
                 : run.samples.columnIndex(targetChannel) >= 0 && !isFeedAxisRun(run.kind))
             ids << run.id;
     }

@@ -10,8 +10,8 @@
 namespace driftlab::models {
 
 /// Runs whose thermal error a model can be fitted to: feed-axis runs with
-/// positioning data (empty `targetChannel`), or the spindle/ETVE runs that log
-/// the drift channel `targetChannel`. In campaign order.
+/// positioning data that include the cold reference cycle 0 (empty `targetChannel`), or the
+/// spindle/ETVE runs that log the drift channel `targetChannel`. In campaign order.
 QStringList modelledRuns(const Campaign& campaign, const QString& targetChannel = {});
 
 /// The displacement channels that some spindle/ETVE run logs: the drift
