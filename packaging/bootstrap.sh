@@ -137,7 +137,14 @@ run_main_job() {
     log "main job 16/18: batch analysis of the bundle, its zip and every campaign of the store, two at a time in separate processes, one JSON line each in $out/batch.jsonl"
     "$cli" batch "$out/campaign" "$out/campaign.zip" "$out/driftlab.sqlite" -j 2 \
         --what info,iso230-2,fit >"$out/batch.jsonl"
-    cut -c 1-160 "$out/batch.jsonl"
+    python3 -c 'import json, sys
+for line in open(sys.argv[1]):
+    r = json.loads(line)
+    fit = (r.get("fit") or {}).get("score") or {}
+    iso = r.get("iso230_2") or {}
+    print("  %-46s %-5s ISO 230-2 A %6s µm  heat-transfer RMS %5s µm (%s)" % (r["item"][-46:],
+          "ok" if r["ok"] else "FAIL", "%.2f" % iso["A"] if "A" in iso else "-",
+          "%.2f" % fit["rms_um"] if "rms_um" in fit else "-", (r.get("fit") or {}).get("score_kind", "skipped")))' "$out/batch.jsonl"
     log "main job 17/18: the Debian package (cpack) in $out/deb/, and its control fields"
     (cd "$build" && cpack -G DEB -B "$out/deb" >/dev/null)
     dpkg-deb -f "$out"/deb/driftlab_*.deb Package Version Depends | cut -c 1-200
