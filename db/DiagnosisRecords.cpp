@@ -6,29 +6,47 @@
 
 namespace driftlab::db {
 
-QJsonObject findingJson(const diagnosis::Finding& f, const diagnosis::ResidualSummary& before) {
+QJsonObject findingJson(const diagnosis::Finding& f) {
+    QJsonObject parameters, sigmas;
+    for (const auto& [name, p] : f.parameters) {
+        parameters[name] = jsonNumber(p.value);
+        sigmas[name] = jsonNumber(p.sigma);
+    }
+    const QString unit =
+        f.gain.unit == QLatin1String("K") ? QStringLiteral("K") : QStringLiteral("um");
     return {
         {QStringLiteral("cause"), f.cause},
+        {QStringLiteral("step"), f.step},
         {QStringLiteral("confidence"), jsonNumber(f.confidence)},
         {QStringLiteral("significant"), f.significant},
-        {QStringLiteral("parameters"),
-         QJsonObject{{f.parameter_name, jsonNumber(f.parameter.value)}}},
-        {QStringLiteral("sigma"), QJsonObject{{f.parameter_name, jsonNumber(f.parameter.sigma)}}},
+        {QStringLiteral("parameters"), parameters},
+        {QStringLiteral("sigma"), sigmas},
         {QStringLiteral("bic_drop"), jsonNumber(f.bic_drop)},
         {QStringLiteral("evidence"), f.evidence},
         {QStringLiteral("gain"),
-         QJsonObject{{QStringLiteral("test_rms_before_um"), jsonNumber(before.error_rms_um)},
-                     {QStringLiteral("test_rms_after_um"), jsonNumber(f.test_after.error_rms_um)},
-                     {QStringLiteral("test_temperature_rms_before_K"),
-                      jsonNumber(before.temperature_rms_K)},
-                     {QStringLiteral("test_temperature_rms_after_K"),
-                      jsonNumber(f.test_after.temperature_rms_K)},
-                     {QStringLiteral("reduction"), jsonNumber(f.reduction)}}}};
+         QJsonObject{
+             {QStringLiteral("quantity"), f.gain.quantity},
+             {QStringLiteral("test_rms_before_") + unit, jsonNumber(f.gain.test_rms_before)},
+             {QStringLiteral("test_rms_after_") + unit, jsonNumber(f.gain.test_rms_after)},
+             {QStringLiteral("reduction"), jsonNumber(f.gain.reduction)},
+             {QStringLiteral("positioning_rms_before_um"), jsonNumber(f.test_before.error_rms_um)},
+             {QStringLiteral("positioning_rms_after_um"), jsonNumber(f.test_after.error_rms_um)},
+             {QStringLiteral("temperature_rms_before_K"),
+              jsonNumber(f.test_before.temperature_rms_K)},
+             {QStringLiteral("temperature_rms_after_K"),
+              jsonNumber(f.test_after.temperature_rms_K)}}}};
 }
 
 QJsonObject diagnosisJson(const diagnosis::DiagnosisResult& r) {
-    QJsonArray findings;
-    for (const auto& f : r.findings) findings << findingJson(f, r.base_test);
+    QJsonArray findings, causes;
+    for (const auto& f : r.findings) findings << findingJson(f);
+    for (const QString& cause : r.causes)
+        if (const auto* f = diagnosis::adoptedFinding(r, cause))
+            causes << QJsonObject{{QStringLiteral("cause"), cause},
+                                  {QStringLiteral("step"), f->step},
+                                  {QStringLiteral("confidence"), jsonNumber(f->confidence)},
+                                  {QStringLiteral("quantity"), f->gain.quantity},
+                                  {QStringLiteral("reduction"), jsonNumber(f->gain.reduction)}};
     QJsonObject json{
         {QStringLiteral("base_model"), kDiagnosisBaseModel},
         {QStringLiteral("train_runs"), QJsonArray::fromStringList(r.train_runs)},
@@ -40,27 +58,30 @@ QJsonObject diagnosisJson(const diagnosis::DiagnosisResult& r) {
              {QStringLiteral("test_temperature_rms_K"), jsonNumber(r.base_test.temperature_rms_K)},
              {QStringLiteral("reading_noise_um"), jsonNumber(r.base_test.error_noise_um)}}},
         {QStringLiteral("findings"), findings},
+        {QStringLiteral("causes"), causes},
         {QStringLiteral("verdict"), r.verdict}};
     if (!r.verdict_evidence.isEmpty())
         json[QStringLiteral("verdict_evidence")] = r.verdict_evidence;
+    if (!r.remaining.isEmpty()) json[QStringLiteral("remaining")] = r.remaining;
     return json;
 }
 
 const diagnosis::Finding* verdictFinding(const diagnosis::DiagnosisResult& r) {
-    for (const auto& f : r.findings)
-        if (f.cause == r.verdict) return &f;
-    return nullptr;
+    return r.causes.isEmpty() ? nullptr : diagnosis::adoptedFinding(r, r.causes.back());
 }
 
 ModelFitRecord adoptedExtensionFit(const diagnosis::DiagnosisResult& r,
                                    const diagnosis::Finding& f) {
-    return {0,
-            QStringLiteral("heat-transfer+") + f.cause,
-            QStringLiteral("positioning"),
-            r.train_runs,
-            r.test_runs,
-            parametersJson(f.fit.parameters),
-            findingJson(f, r.base_test)[QStringLiteral("gain")].toObject()};
+    return {
+        0,
+        QStringLiteral("heat-transfer+") +
+            (f.step > 1 && !r.causes.isEmpty() ? r.causes.front() + QLatin1Char('+') : QString()) +
+            f.cause,
+        QStringLiteral("positioning"),
+        r.train_runs,
+        r.test_runs,
+        parametersJson(f.fit.parameters),
+        findingJson(f)[QStringLiteral("gain")].toObject()};
 }
 
 std::optional<qint64> adoptExtension(CampaignStore& store, qint64 campaignId,

@@ -15,15 +15,16 @@ namespace driftlab::db {
 /// The base model every diagnosis extends, as stored.
 inline const QString kDiagnosisBaseModel = QStringLiteral("screw-fdm");
 
-/// One finding: cause, confidence, parameter ± σ, ΔBIC, evidence and its gain
-/// on the held-out runs against `before` (the base model's).
-QJsonObject findingJson(const diagnosis::Finding& finding,
-                        const diagnosis::ResidualSummary& before);
+/// One finding: cause, step, confidence, parameters ± σ, ΔBIC, evidence and
+/// its held-out gain on its quantity, with both quantities before and after.
+QJsonObject findingJson(const diagnosis::Finding& finding);
 
-/// The whole result: runs, base figures, findings, verdict (and its evidence).
+/// The whole result: runs, base figures, findings, the causes adopted in
+/// order, verdict (and its evidence), what remains.
 QJsonObject diagnosisJson(const diagnosis::DiagnosisResult& result);
 
-/// The finding the verdict names, or nullptr (verdict none/unexplained).
+/// The finding whose model is the adopted extension with every cause found
+/// (the last cause's), or nullptr (verdict none/unexplained).
 const diagnosis::Finding* verdictFinding(const diagnosis::DiagnosisResult& result);
 
 /// The model fit an adopted extension is kept as: "heat-transfer+CAUSE" on the

@@ -103,10 +103,11 @@ run_main_job() {
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model mlr --train S1
     log "main job 7/18: every model, fitted on each state and scored on every other"
     "$cli" compare --db "$out/driftlab.sqlite" --campaign "$id"
-    log "main job 8/18: a second campaign with an effect hidden in the simulated rig (forced convection), run through the procedure engine (five moving states) and logged live; the diagnosis must find it"
+    log "main job 8/18: a second campaign with two effects hidden in the simulated rig (structure growth lagging its sensor, forced convection), run through the procedure engine (five moving states) and logged live; the diagnosis must find both, in order"
     local hidden
     hidden=$("$cli" run --procedure "$procedures/moving-states-s1-s5.json" --rig sim \
-        --effect forced_convection=0.05 --db "$out/driftlab.sqlite" 2>"$out/hidden-run.err")
+        --effect forced_convection=0.05 --effect frame_growth=3 --db "$out/driftlab.sqlite" \
+        2>"$out/hidden-run.err")
     "$cli" diagnose --db "$out/driftlab.sqlite" --campaign "$hidden" --plots "$out/plots/diagnosis"
     log "main job 9/18: ISO 230-2 evaluation of S1's interferometer cycles (a moving state: its thermal drift inflates R, as the warning says)"
     "$cli" iso230-2 --db "$out/driftlab.sqlite" --campaign "$id" --run S1

@@ -101,15 +101,24 @@ int diagnoseCommand(const QStringList& args) {
             .arg(r.base_test.error_peak_um, 0, 'f', 2)
             .arg(r.base_test.error_noise_um, 0, 'f', 2));
     for (const auto& f : r.findings)
-        printLine(QStringLiteral("  %1 %2  gain %3 %  ΔBIC %4  %5 = %6")
+        printLine(QStringLiteral("  %1 step %2 %3  gain %4 % on %5  ΔBIC %6  %7")
                       .arg(f.significant ? QStringLiteral("*") : QStringLiteral(" "))
+                      .arg(f.step)
                       .arg(f.cause, -28)
-                      .arg(100 * f.reduction, 5, 'f', 1)
+                      .arg(100 * f.gain.reduction, 5, 'f', 1)
+                      .arg(f.gain.quantity)
                       .arg(f.bic_drop, 8, 'f', 0)
-                      .arg(f.parameter_name)
-                      .arg(f.parameter.value, 0, 'g', 4));
-    printLine(QStringLiteral("verdict: %1").arg(r.verdict));
-    printLine(r.verdict_evidence.isEmpty() ? r.findings.front().evidence : r.verdict_evidence);
+                      .arg(diagnosis::parametersText(f)));
+    printLine(
+        QStringLiteral("verdict: %1").arg(r.verdict) +
+        (r.causes.size() > 1
+             ? QStringLiteral(" (causes in order: %1)").arg(r.causes.join(QStringLiteral(", ")))
+             : QString()));
+    if (!r.verdict_evidence.isEmpty()) printLine(r.verdict_evidence);
+    for (const QString& cause : r.causes)
+        if (const auto* f = diagnosis::adoptedFinding(r, cause))
+            printLine(QStringLiteral("%1: %2").arg(cause, f->evidence));
+    if (!r.remaining.isEmpty()) printLine(r.remaining);
     return 0;
 }
 

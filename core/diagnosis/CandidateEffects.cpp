@@ -1,6 +1,7 @@
 #include "core/diagnosis/CandidateEffects.h"
 
 #include <cmath>
+#include <limits>
 
 #include "core/models/RunDataAccess.h"
 
@@ -9,44 +10,11 @@ namespace {
 
 using models::FreeParameter;
 using models::PredictionPoint;
-using models::ScrewModelVariant;
 using models::ScrewRunInputs;
 using models::ScrewRunOutputs;
+using models::Signal;
 
-CandidateEffect extend(const QString& cause, const QString& channel, FreeParameter extra,
-                       const std::vector<double>& baseValues) {
-    CandidateEffect c{cause, channel, models::baseScrewModel(), extra};
-    for (std::size_t i = 0; i < c.variant.parameters.size() && i < baseValues.size(); ++i)
-        c.variant.parameters[i].initial = baseValues[i];
-    c.variant.parameters.push_back(extra);
-    return c;
-}
-
-/// A physical extension: the extra value goes into the simulation.
-CandidateEffect physical(const QString& cause, FreeParameter extra,
-                         const std::vector<double>& baseValues,
-                         void (*apply)(double, physics::ScrewThermalParameters&)) {
-    CandidateEffect c = extend(cause, {}, extra, baseValues);
-    const auto base = c.variant.physics;
-    c.variant.physics = [base, apply](const double* p, physics::ScrewThermalParameters& s) {
-        base(p, s);
-        apply(p[3], s);
-    };
-    return c;
-}
-
-/// A reading extension: the simulation is the base one, the readings change.
-CandidateEffect reading(const QString& cause, const QString& channel, FreeParameter extra,
-                        const std::vector<double>& baseValues,
-                        std::function<void(double, const ScrewRunInputs&,
-                                           const std::vector<PredictionPoint>&, ScrewRunOutputs&)>
-                            apply) {
-    CandidateEffect c = extend(cause, channel, extra, baseValues);
-    c.variant.readings = [apply](const double* p, const ScrewRunInputs& in,
-                                 const std::vector<PredictionPoint>& at,
-                                 ScrewRunOutputs& out) { apply(p[3], in, at, out); };
-    return c;
-}
+constexpr double kReferenceSpeed_rad_s = physics::ScrewThermalParameters::kReferenceSpeed_rad_s;
 
 /// Index of a sensor series by channel, or -1.
 int sensorIndex(const ScrewRunInputs& in, const QString& channel) {
@@ -55,9 +23,22 @@ int sensorIndex(const ScrewRunInputs& in, const QString& channel) {
     return -1;
 }
 
-/// The interferometer reading moves by gain(t, x)·value at every point.
-void addToErrors(ScrewRunOutputs& out, const std::vector<PredictionPoint>& at,
-                 const models::Signal& rise, const ScrewRunInputs& in, double perKelvin_um,
+/// What a first-order element with time constant `tau_s` makes of `values`
+/// sampled at `time_s`, exactly between samples for a signal held linear.
+void firstOrderLag(const std::vector<double>& time_s, std::vector<double>& values, double tau_s) {
+    if (!(tau_s > 0)) return;
+    for (std::size_t k = 1; k < values.size(); ++k)
+        values[k] += (values[k - 1] - values[k]) * std::exp(-(time_s[k] - time_s[k - 1]) / tau_s);
+}
+
+Signal lagged(Signal s, double tau_s) {
+    firstOrderLag(s.time_s, s.value, tau_s);
+    return s;
+}
+
+/// The interferometer reading moves by perKelvin·pathFactor(x)·rise(t).
+void addToErrors(ScrewRunOutputs& out, const std::vector<PredictionPoint>& at, const Signal& rise,
+                 const ScrewRunInputs& in, double perKelvin_um,
                  const std::function<double(double x_mm)>& pathFactor) {
     if (rise.empty()) return;
     for (std::size_t j = 0; j < at.size(); ++j)
@@ -65,85 +46,187 @@ void addToErrors(ScrewRunOutputs& out, const std::vector<PredictionPoint>& at,
                            models::valueAt(rise, at[j].time_s, in.max_gap_s, in.run_id);
 }
 
+const models::TemperatureRise* firstOfRole(const models::RunData& run, ChannelRole role) {
+    for (const auto& t : run.temperatures)
+        if (t.role == role && t.unusable.isEmpty()) return &t;
+    return nullptr;
+}
+
+/// Starting value of a lag: of a few time constants from none to four hours,
+/// the one whose lagged structure rise best explains (least squares, one gain)
+/// what the base model leaves on the training runs. The Ceres fit then refines
+/// it; started far off, it would see no slope (a lag of seconds changes
+/// nothing) or stall in the wrong valley.
+double structureLagStart_s(const std::vector<models::RunData>& runs,
+                           const std::vector<models::ReadingResiduals>& residuals) {
+    double best = 600, bestLeft = std::numeric_limits<double>::infinity();
+    for (const double tau : {0.0, 600.0, 1800.0, 3600.0, 7200.0, 14400.0}) {
+        double xy = 0, xx = 0, yy = 0;
+        for (std::size_t k = 0; k < runs.size() && k < residuals.size(); ++k) {
+            const auto* structure = firstOfRole(runs[k], ChannelRole::Structure);
+            if (!structure) continue;
+            const Signal rise = lagged(structure->rise_K, tau);
+            const auto& r = residuals[k];
+            for (std::size_t j = 0; j < r.points.size(); ++j) {
+                const double x =
+                    models::valueAt(rise, r.points[j].time_s, runs[k].max_gap_s, runs[k].run_id);
+                xy += x * r.error_um[j];
+                xx += x * x;
+                yy += r.error_um[j] * r.error_um[j];
+            }
+        }
+        const double left = xx > 0 ? yy - xy * xy / xx : yy;
+        if (left < bestLeft) bestLeft = left, best = std::max(tau, 1.0);
+    }
+    return best;
+}
+
+CandidateEffect physical(const QString& cause, std::vector<FreeParameter> parameters,
+                         std::function<void(const double*, physics::ScrewThermalParameters&)> f) {
+    return {cause, {}, std::move(parameters), std::move(f), {}};
+}
+
+CandidateEffect onSensor(
+    const QString& kind, const QString& channel, FreeParameter parameter,
+    std::function<void(double, const ScrewRunInputs&, std::vector<double>&, std::size_t sensor)>
+        apply) {
+    return {kind + QLatin1Char(':') + channel,
+            channel,
+            {std::move(parameter)},
+            {},
+            [channel, apply](const double* own, const ScrewRunInputs& in, const auto&,
+                             ScrewRunOutputs& out) {
+                const int s = sensorIndex(in, channel);
+                if (s >= 0) apply(own[0], in, out.sensor_C[std::size_t(s)], std::size_t(s));
+            }};
+}
+
+/// Whether the runs move at more than one speed (top feeds 10 % apart or
+/// more): only then can a speed exponent be told from a gain.
+bool severalSpeeds(const std::vector<models::RunData>& runs) {
+    std::vector<double> top;
+    for (const auto& r : runs) {
+        double feed = 0;
+        for (const auto& m : r.motion) feed = std::max(feed, std::abs(m.feed_mm_min));
+        for (double f : r.feed_mm_min.value) feed = std::max(feed, std::abs(f));
+        if (feed > 0) top.push_back(feed);
+    }
+    for (double a : top)
+        for (double b : top)
+            if (std::abs(a - b) > 0.1 * std::max(a, b)) return true;
+    return false;
+}
+
+bool allRunsHave(const std::vector<models::RunData>& runs, ChannelRole role) {
+    for (const auto& r : runs)
+        if (!firstOfRole(r, role)) return false;
+    return !runs.empty();
+}
+
 }  // namespace
 
-std::vector<CandidateEffect> candidateEffects(const std::vector<models::RunData>& runs,
-                                              const std::vector<double>& baseValues) {
+std::vector<CandidateEffect> candidateEffects(
+    const std::vector<models::RunData>& runs,
+    const std::vector<models::ReadingResiduals>& baseResiduals) {
     std::vector<CandidateEffect> candidates;
-    candidates.push_back(
-        physical(QStringLiteral("forced_convection"),
-                 {QStringLiteral("h1"), QStringLiteral("W/(m²·K) per rad/s"), 0.01, 0, 2},
-                 baseValues, [](double v, physics::ScrewThermalParameters& s) {
-                     s.h1_forced_W_m2K = v;
-                     s.forced_exponent = 1;
-                 }));
+    // h = h0 + Δh·(|ω|/ω_ref)^m: the rise Δh at 800 rpm keeps the two free
+    // values apart (h1 per (rad/s)^m would change scale with m). Trained at
+    // one speed, m cannot be told from Δh: it stays 1.
+    std::vector<FreeParameter> convection{
+        {QStringLiteral("dh_800rpm"), QStringLiteral("W/(m²·K)"), 1, 0, 200}};
+    if (severalSpeeds(runs)) convection.push_back({QStringLiteral("m"), QString(), 1, 0.3, 3});
+    const bool exponent = convection.size() > 1;
+    candidates.push_back(physical(QStringLiteral("forced_convection"), convection,
+                                  [exponent](const double* v, physics::ScrewThermalParameters& s) {
+                                      s.forced_exponent = exponent ? v[1] : 1.0;
+                                      s.h1_forced_W_m2K =
+                                          v[0] / std::pow(kReferenceSpeed_rad_s, s.forced_exponent);
+                                  }));
     candidates.push_back(physical(
-        QStringLiteral("nut_heat_exponent"), {QStringLiteral("n"), QString(), 1, 0.3, 3},
-        baseValues, [](double v, physics::ScrewThermalParameters& s) { s.nut_heat_exponent = v; }));
+        QStringLiteral("nut_heat_exponent"), {{QStringLiteral("n"), QString(), 1, 0.3, 3}},
+        [](const double* v, physics::ScrewThermalParameters& s) { s.nut_heat_exponent = v[0]; }));
     bool torque = !runs.empty();
-    bool air = !runs.empty(), structure = !runs.empty();
-    for (const auto& r : runs) {
-        torque = torque && !r.torque_Nm.empty();
-        bool hasAir = false, hasStructure = false;
-        for (const auto& t : r.temperatures) {
-            hasAir = hasAir || (t.role == ChannelRole::Air && t.unusable.isEmpty());
-            hasStructure =
-                hasStructure || (t.role == ChannelRole::Structure && t.unusable.isEmpty());
-        }
-        air = air && hasAir;
-        structure = structure && hasStructure;
-    }
+    for (const auto& r : runs) torque = torque && !r.torque_Nm.empty();
     if (torque)
-        candidates.push_back(physical(
-            QStringLiteral("motor_heat"),
-            {QStringLiteral("c_motor"), QStringLiteral("W/(N·m)²"), 0.01, 0, 20}, baseValues,
-            [](double v, physics::ScrewThermalParameters& s) { s.c_motor_W_per_Nm2 = v; }));
+        candidates.push_back(
+            physical(QStringLiteral("motor_heat"),
+                     {{QStringLiteral("c_motor"), QStringLiteral("W/(N·m)²"), 0.01, 0, 20}},
+                     [](const double* v, physics::ScrewThermalParameters& s) {
+                         s.c_motor_W_per_Nm2 = v[0];
+                     }));
 
     // Sensor effects for every temperature sensor the model reads on the screw.
-    QStringList screwSensors;
     if (!runs.empty())
-        for (const auto& t : runs.front().temperatures)
-            if ((t.role == ChannelRole::Nut || (t.role == ChannelRole::Bearing && t.position_mm)) &&
-                t.unusable.isEmpty())
-                screwSensors << t.channel_id;
-    for (const QString& ch : screwSensors) {
+        for (const auto& t : runs.front().temperatures) {
+            if (!(t.role == ChannelRole::Nut ||
+                  (t.role == ChannelRole::Bearing && t.position_mm)) ||
+                !t.unusable.isEmpty())
+                continue;
+            candidates.push_back(
+                onSensor(QStringLiteral("sensor_lag"), t.channel_id,
+                         {QStringLiteral("tau"), QStringLiteral("s"), 60, 1, 7200},
+                         [](double tau, const ScrewRunInputs& in, std::vector<double>& y,
+                            std::size_t s) { firstOrderLag(in.sensors[s].time_s, y, tau); }));
+            candidates.push_back(onSensor(
+                QStringLiteral("sensor_offset"), t.channel_id,
+                {QStringLiteral("offset"), QStringLiteral("K"), 0, -10, 10},
+                [](double offset, const ScrewRunInputs&, std::vector<double>& y, std::size_t) {
+                    for (double& v : y) v += offset;
+                }));
+        }
+    if (allRunsHave(runs, ChannelRole::Air))
         candidates.push_back(
-            reading(QStringLiteral("sensor_lag:") + ch, ch,
-                    {QStringLiteral("tau"), QStringLiteral("s"), 60, 1, 7200}, baseValues,
-                    [ch](double tau, const ScrewRunInputs& in, const auto&, ScrewRunOutputs& out) {
-                        const int s = sensorIndex(in, ch);
-                        if (s < 0) return;
-                        auto& y = out.sensor_C[std::size_t(s)];
-                        const auto& t = in.sensors[std::size_t(s)].time_s;
-                        // Exactly as a first-order sensor follows its part between samples.
-                        for (std::size_t k = 1; k < y.size(); ++k)
-                            y[k] = y[k] + (y[k - 1] - y[k]) * std::exp(-(t[k] - t[k - 1]) / tau);
-                    }));
-        candidates.push_back(reading(
-            QStringLiteral("sensor_offset:") + ch, ch,
-            {QStringLiteral("offset"), QStringLiteral("K"), 0, -10, 10}, baseValues,
-            [ch](double offset, const ScrewRunInputs& in, const auto&, ScrewRunOutputs& out) {
-                const int s = sensorIndex(in, ch);
-                if (s < 0) return;
-                for (double& v : out.sensor_C[std::size_t(s)]) v += offset;
-            }));
-    }
-    if (air)
-        candidates.push_back(reading(
-            QStringLiteral("air_refraction"), {}, {QStringLiteral("fraction"), QString(), 0, -5, 5},
-            baseValues,
-            [](double fraction, const ScrewRunInputs& in, const auto& at, ScrewRunOutputs& out) {
-                addToErrors(out, at, in.air_rise_K, in, kEdlen_ppm_per_K * 1e-3 * fraction,
-                            [&](double x) { return x + in.dead_path_mm; });
-            }));
-    if (structure)
-        candidates.push_back(reading(
-            QStringLiteral("frame_growth"), {},
-            {QStringLiteral("g"), QStringLiteral("µm/K"), 0, -50, 50}, baseValues,
-            [](double g, const ScrewRunInputs& in, const auto& at, ScrewRunOutputs& out) {
-                addToErrors(out, at, in.structure_rise_K, in, g, [](double) { return 1.0; });
-            }));
+            {QStringLiteral("air_refraction"),
+             {},
+             {{QStringLiteral("fraction"), QString(), 0, -5, 5}},
+             {},
+             [](const double* v, const ScrewRunInputs& in, const auto& at, ScrewRunOutputs& out) {
+                 addToErrors(out, at, in.air_rise_K, in, kEdlen_ppm_per_K * 1e-3 * v[0],
+                             [&](double x) { return x + in.dead_path_mm; });
+             }});
+    if (allRunsHave(runs, ChannelRole::Structure))
+        // The structure is massive: its growth follows the measured surface
+        // temperature with a lag of up to hours.
+        candidates.push_back(
+            {QStringLiteral("frame_growth"),
+             {},
+             {{QStringLiteral("g"), QStringLiteral("µm/K"), 0, -50, 50},
+              {QStringLiteral("tau"), QStringLiteral("s"), structureLagStart_s(runs, baseResiduals),
+               1, 6 * 3600}},
+             {},
+             [](const double* v, const ScrewRunInputs& in, const auto& at, ScrewRunOutputs& out) {
+                 addToErrors(out, at, lagged(in.structure_rise_K, v[1]), in, v[0],
+                             [](double) { return 1.0; });
+             }});
     return candidates;
+}
+
+models::ScrewModelVariant extendedModel(const std::vector<CandidateEffect>& effects,
+                                        const std::vector<double>& start) {
+    models::ScrewModelVariant v = models::baseScrewModel();
+    std::vector<std::size_t> offsets;
+    for (const auto& e : effects) {
+        offsets.push_back(v.parameters.size());
+        v.parameters.insert(v.parameters.end(), e.parameters.begin(), e.parameters.end());
+    }
+    for (std::size_t i = 0; i < v.parameters.size() && i < start.size(); ++i)
+        v.parameters[i].initial = start[i];
+    const auto base = v.physics;
+    v.physics = [base, effects, offsets](const double* p, physics::ScrewThermalParameters& s) {
+        base(p, s);
+        for (std::size_t e = 0; e < effects.size(); ++e)
+            if (effects[e].physics) effects[e].physics(p + offsets[e], s);
+    };
+    bool readings = false;
+    for (const auto& e : effects) readings = readings || bool(e.readings);
+    if (readings)
+        v.readings = [effects, offsets](const double* p, const ScrewRunInputs& in,
+                                        const std::vector<PredictionPoint>& at,
+                                        ScrewRunOutputs& out) {
+            for (std::size_t e = 0; e < effects.size(); ++e)
+                if (effects[e].readings) effects[e].readings(p + offsets[e], in, at, out);
+        };
+    return v;
 }
 
 }  // namespace driftlab::diagnosis

@@ -1,87 +1,19 @@
 #include "core/diagnosis/Diagnosis.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
 
-#include "core/diagnosis/CandidateEffects.h"
+#include "core/diagnosis/CandidateScoring.h"
 #include "core/models/ModelError.h"
 
 namespace driftlab::diagnosis {
 namespace {
-
-struct Evaluation {
-    std::vector<models::ReadingResiduals> residuals;
-    double chi2 = 0;
-    std::size_t count = 0;
-};
-
-Evaluation evaluate(const models::HeatTransferModel& model,
-                    const std::vector<models::RunData>& runs) {
-    Evaluation e;
-    for (const auto& run : runs) {
-        e.residuals.push_back(model.residuals(run));
-        e.chi2 += e.residuals.back().normalizedSquares;
-        e.count += e.residuals.back().count;
-    }
-    return e;
-}
-
-/// Words for a test engineer: what the fitted effect means on this machine.
-QString evidenceFor(const CandidateEffect& c, double value, const ResidualSummary& before,
-                    const ResidualSummary& after, const QStringList& testRuns) {
-    const QString runs = testRuns.join(QStringLiteral(", "));
-    const QString base = c.cause.section(QLatin1Char(':'), 0, 0);
-    const QString residual =
-        QStringLiteral(
-            "on held-out runs %1 the positioning residual goes from %2 to %3 µm RMS "
-            "and the screw-temperature residual from %4 to %5 K RMS")
-            .arg(runs)
-            .arg(before.error_rms_um, 0, 'f', 2)
-            .arg(after.error_rms_um, 0, 'f', 2)
-            .arg(before.temperature_rms_K, 0, 'f', 3)
-            .arg(after.temperature_rms_K, 0, 'f', 3);
-    const double omega800 = physics::ScrewThermalParameters::kReferenceSpeed_rad_s;
-    QString what;
-    if (base == QLatin1String("forced_convection"))
-        what = QStringLiteral(
-                   "convection grows with screw speed: h rises by %1 W/(m²·K) at "
-                   "800 rpm (h1 = %2 per rad/s)")
-                   .arg(value * omega800, 0, 'f', 1)
-                   .arg(value, 0, 'g', 3);
-    else if (base == QLatin1String("nut_heat_exponent"))
-        what = QStringLiteral(
-                   "nut friction power grows as speed^%1, not in proportion: at 1500 "
-                   "rpm the nut makes %2× the heat a linear law predicts")
-                   .arg(value, 0, 'f', 2)
-                   .arg(std::pow(1500.0 / 800.0, value - 1), 0, 'f', 2);
-    else if (base == QLatin1String("motor_heat"))
-        what = QStringLiteral("the servo motor heats the fixed end: %1 W per (N·m)² of torque")
-                   .arg(value, 0, 'g', 3);
-    else if (base == QLatin1String("sensor_lag"))
-        what = QStringLiteral(
-                   "sensor %1 follows the screw with a first-order lag of %2 s: it "
-                   "reads low while the screw warms and high while it cools")
-                   .arg(c.channel)
-                   .arg(value, 0, 'f', 0);
-    else if (base == QLatin1String("sensor_offset"))
-        what = QStringLiteral("sensor %1 reads %2 K %3 throughout")
-                   .arg(c.channel)
-                   .arg(std::abs(value), 0, 'f', 2)
-                   .arg(value > 0 ? QStringLiteral("high") : QStringLiteral("low"));
-    else if (base == QLatin1String("air_refraction"))
-        what = QStringLiteral(
-                   "the interferometer reading follows the air temperature over the "
-                   "beam path (x + dead path): %1 of the Edlén correction "
-                   "(−0.95 ppm/K) is missing")
-                   .arg(value, 0, 'f', 2);
-    else if (base == QLatin1String("frame_growth"))
-        what = QStringLiteral(
-                   "the axis zero moves with the structure temperature by %1 µm/K, the "
-                   "same at every position")
-                   .arg(value, 0, 'f', 2);
-    return what + QStringLiteral("; ") + residual;
-}
 
 /// Whether an extension explains the whole discrepancy: the positioning
 /// residual it leaves is within `factor` × the reading noise, and the worst
@@ -96,7 +28,112 @@ bool leavesOnlyNoise(const ResidualSummary& after, const ResidualSummary& before
     return positioning && after.worst_channel_rms_K <= temperatureAllowed;
 }
 
+/// Best held-out gain first; confidence from how clearly a finding beats the
+/// next one and how strong its evidence is.
+void rank(std::vector<Finding>& findings) {
+    std::sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) {
+        return a.gain.reduction > b.gain.reduction;
+    });
+    for (std::size_t i = 0; i < findings.size(); ++i) {
+        Finding& f = findings[i];
+        const double runnerUp =
+            i + 1 < findings.size() ? std::max(0.0, findings[i + 1].gain.reduction) : 0;
+        const double strength = 1 - std::exp(-std::max(0.0, f.bic_drop) / 20);
+        const double margin =
+            f.gain.reduction > 0 ? f.gain.reduction / (f.gain.reduction + runnerUp) : 0;
+        f.confidence = i == 0 ? strength * margin : strength * margin * 0.5;
+    }
+}
+
+/// Whether a significant effect on the axis also explains most of what the
+/// sensor effect `s` explains on its sensor: one physical cause that fits
+/// every reading beats an effect on one sensor that absorbs its share of the
+/// base model's compromise.
+bool explainedByPhysics(const Finding& s, const std::vector<Finding>& findings,
+                        const std::vector<models::ReadingResiduals>& before) {
+    const double base = quantityResidual(before, s.effect.channel).rms();
+    for (const auto& p : findings) {
+        if (!p.significant || !p.effect.channel.isEmpty() || !(base > 0)) continue;
+        const double reduction =
+            1 - quantityResidual(p.test_residuals, s.effect.channel).rms() / base;
+        if (reduction >= 0.8 * s.gain.reduction) return true;
+    }
+    return false;
+}
+
+/// The significant finding with the largest gain, or nullptr.
+const Finding* bestSignificant(const std::vector<Finding>& findings,
+                               const std::vector<models::ReadingResiduals>& before) {
+    for (const auto& f : findings)
+        if (f.significant &&
+            (f.effect.channel.isEmpty() || !explainedByPhysics(f, findings, before)))
+            return &f;
+    return nullptr;
+}
+
+struct Cancelled {};
+
+/// Every candidate on top of `base`, ranked; throws Cancelled. The fits are
+/// independent: two at a time (the reference machine has two cores).
+std::vector<Finding> testCandidates(
+    const StepBase& base,
+    const std::vector<std::pair<CandidateEffect, std::vector<double>>>& candidates, int step,
+    const StepData& data, std::atomic<double>* done, double from, double to) {
+    std::vector<std::optional<Finding>> scored(candidates.size());
+    std::vector<std::exception_ptr> failed(candidates.size());
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t k; (k = next++) < candidates.size();) {
+            *done = from + (to - from) * double(k) / double(candidates.size());
+            if (data.cancelled()) return;
+            try {
+                scored[k] =
+                    scoreCandidate(base, candidates[k].first, candidates[k].second, step, data);
+            } catch (...) {
+                failed[k] = std::current_exception();
+            }
+        }
+    };
+    const unsigned workers = std::clamp(std::thread::hardware_concurrency(), 1u, 2u);
+    std::vector<std::thread> threads;
+    for (unsigned w = 1; w < workers; ++w) threads.emplace_back(work);
+    work();
+    for (auto& t : threads) t.join();
+    if (data.cancelled()) throw Cancelled{};
+    for (const auto& e : failed)
+        if (e) std::rethrow_exception(e);
+    std::vector<Finding> findings;
+    for (auto& f : scored)
+        if (f) findings.push_back(std::move(*f));  // none: an extension the data cannot carry
+    rank(findings);
+    return findings;
+}
+
+QString percent(double share) {
+    return QString::number(100 * share, 'f', 0) + QStringLiteral(" %");
+}
+
 }  // namespace
+
+const Finding* adoptedFinding(const DiagnosisResult& r, const QString& cause) {
+    const int step = int(r.causes.indexOf(cause)) + 1;
+    for (const auto& f : r.findings)
+        if (step > 0 && f.cause == cause && f.step == step) return &f;
+    return nullptr;
+}
+
+QString parametersText(const Finding& f) {
+    QStringList parts;
+    for (const auto& [name, p] : f.parameters)
+        parts << QStringLiteral("%1 = %2 ± %3 %4")
+                     .arg(name)
+                     .arg(p.value, 0, 'g', 4)
+                     .arg(std::isfinite(p.sigma) ? QString::number(p.sigma, 'g', 2)
+                                                 : QStringLiteral("?"))
+                     .arg(p.unit)
+                     .trimmed();
+    return parts.join(QStringLiteral(", "));
+}
 
 void splitRuns(const Campaign& campaign, QStringList* train, QStringList* test) {
     QStringList runs;
@@ -133,15 +170,26 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
         return result;
     }
 
-    // Asked between candidates and, through the models' cancel check, inside each fit.
-    double done = 0;
-    bool stopped = false;
+    // Asked between candidates and, through the models' cancel check, inside
+    // each fit, from both fitting threads: the caller's callback is called by
+    // one at a time.
+    std::atomic<double> done{0};
+    std::atomic<bool> stopped{false};
+    std::mutex progressMutex;
     const auto cancelled = [&] {
-        return stopped = stopped || (options.progress && !options.progress(done));
+        if (stopped || !options.progress) return bool(stopped);
+        const std::lock_guard lock(progressMutex);
+        if (!options.progress(done)) stopped = true;
+        return bool(stopped);
     };
-    models::HeatTransferModel base;
-    base.setCancelCheck(cancelled);
-    result.base_fit = base.fit(train.runs);
+    // Gains are read to a per cent: the identification need not go on to
+    // round-off, and the diagnosis makes some twenty fits.
+    models::HeatTransferOptions fitting;
+    fitting.function_tolerance = 1e-6;
+    fitting.parameter_tolerance = 1e-5;
+    auto base = std::make_shared<models::HeatTransferModel>(fitting);
+    base->setCancelCheck(cancelled);
+    result.base_fit = base->fit(train.runs);
     if (stopped) {
         result.error = QStringLiteral("diagnosis cancelled");
         return result;
@@ -151,65 +199,74 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
         return result;
     }
     try {
-        const Evaluation baseTrain = evaluate(base, train.runs);
-        const Evaluation baseTest = evaluate(base, test.runs);
-        result.base_residuals = baseTest.residuals;
-        result.base_test = summarise(baseTest.residuals, test.runs);
+        const StepData data{train.runs, test.runs, result.test_runs, options, cancelled};
+        const StepBase step1 = makeStepBase({}, base, train.runs, test.runs);
+        result.base_residuals = step1.test;
+        result.base_test = step1.test_summary;
 
-        const auto candidates = candidateEffects(train.runs, base.values());
-        for (std::size_t k = 0; k < candidates.size(); ++k) {
-            done = double(k) / double(candidates.size());
-            if (cancelled()) {
-                result.error = QStringLiteral("diagnosis cancelled");
-                return result;
+        std::vector<std::pair<CandidateEffect, std::vector<double>>> candidates;
+        for (auto& c : candidateEffects(train.runs, step1.train)) candidates.push_back({c, {}});
+        result.findings = testCandidates(step1, candidates, 1, data, &done, 0, 0.7);
+        // Nothing is named on a base model that already fits to the noise.
+        const Finding* first = result.base_test.atNoiseLevel()
+                                   ? nullptr
+                                   : bestSignificant(result.findings, step1.test);
+        QStringList causes;
+        std::optional<StepBase> adopted;
+        if (first) {
+            causes << first->cause;
+            adopted = makeStepBase({first->effect}, first->model, train.runs, test.runs);
+            // Step 2: what else helped on the held-out runs in step 1 (another
+            // effect may show only once the first is accounted for), tested
+            // again on what the cause leaves, from its own step-1 values.
+            if (!leavesOnlyNoise(adopted->test_summary, result.base_test,
+                                 options.max_residual_over_noise)) {
+                std::vector<std::pair<CandidateEffect, std::vector<double>>> rest;
+                for (const auto& f : result.findings) {
+                    if (!(f.gain.reduction > 0) || f.cause == first->cause) continue;
+                    std::vector<double> own;
+                    for (const auto& p : f.parameters) own.push_back(p.second.value);
+                    rest.push_back({f.effect, own});
+                }
+                const auto second = testCandidates(*adopted, rest, 2, data, &done, 0.7, 1);
+                const Finding* next = bestSignificant(second, adopted->test);
+                if (next && next->gain.reduction >= options.min_second_gain) {
+                    causes << next->cause;
+                    adopted = makeStepBase({first->effect, next->effect}, next->model, train.runs,
+                                           test.runs);
+                }
+                result.findings.insert(result.findings.end(), second.begin(), second.end());
+                for (const auto& f : result.findings)  // the insert moved it
+                    if (f.cause == causes.front() && f.step == 1) first = &f;
             }
-            const CandidateEffect& c = candidates[k];
-            auto model = std::make_shared<models::HeatTransferModel>(base.options(), c.variant);
-            Finding f;
-            f.cause = c.cause;
-            f.parameter_name = c.parameter.name;
-            model->setCancelCheck(cancelled);
-            f.fit = model->fit(train.runs);
-            if (stopped) {
-                result.error = QStringLiteral("diagnosis cancelled");
-                return result;
-            }
-            if (!f.fit.success) continue;  // an extension the data cannot carry
-            const Evaluation candidateTrain = evaluate(*model, train.runs);
-            const Evaluation candidateTest = evaluate(*model, test.runs);
-            const ResidualSummary after = summarise(candidateTest.residuals, test.runs);
-            f.parameter = f.fit.parameters.at(c.parameter.name);
-            f.model = model;
-            // BIC with the noise variance estimated: N·ln(χ²₀/χ²₁) − ln N per parameter.
-            const double n = double(candidateTrain.count);
-            f.bic_drop = n * std::log(baseTrain.chi2 / candidateTrain.chi2) - std::log(n);
-            f.reduction = 1 - std::sqrt(candidateTest.chi2 / baseTest.chi2);
-            f.test_after = after;
-            f.significant =
-                f.bic_drop > options.min_bic_drop && f.reduction > options.min_test_gain;
-            f.evidence =
-                evidenceFor(c, f.parameter.value, result.base_test, after, result.test_runs);
-            result.findings.push_back(f);
         }
-        // Best held-out gain first; confidence from how clearly it beats the rest.
-        std::sort(result.findings.begin(), result.findings.end(),
-                  [](const Finding& a, const Finding& b) { return a.reduction > b.reduction; });
-        for (std::size_t i = 0; i < result.findings.size(); ++i) {
-            Finding& f = result.findings[i];
-            const double runnerUp = i + 1 < result.findings.size()
-                                        ? std::max(0.0, result.findings[i + 1].reduction)
-                                        : 0;
-            const double strength = 1 - std::exp(-std::max(0.0, f.bic_drop) / 20);
-            const double margin = f.reduction > 0 ? f.reduction / (f.reduction + runnerUp) : 0;
-            f.confidence = i == 0 ? strength * margin : strength * margin * 0.5;
-        }
-
-        const bool named = !result.findings.empty() && result.findings.front().significant;
-        if (named && leavesOnlyNoise(result.findings.front().test_after, result.base_test,
-                                     options.max_residual_over_noise)) {
-            result.verdict = result.findings.front().cause;
-            result.adopted_residuals =
-                evaluate(*result.findings.front().model, test.runs).residuals;
+        // Named when the causes explain most of the discrepancy, or all of it
+        // but noise; part of it is not a cause found.
+        const double positioningExplained =
+            adopted ? 1 - adopted->test_summary.error_rms_um /
+                              std::max(result.base_test.error_rms_um, 1e-12)
+                    : 0;
+        const double explained =
+            adopted ? std::max(first->gain.reduction, positioningExplained) : 0;
+        const bool named = adopted && (explained >= options.min_explained ||
+                                       leavesOnlyNoise(adopted->test_summary, result.base_test,
+                                                       options.max_residual_over_noise));
+        if (named) {
+            result.verdict = causes.front();
+            result.causes = causes;
+            result.adopted_residuals = adopted->test;
+            if (!adopted->test_summary.atNoiseLevel())
+                result.remaining =
+                    QStringLiteral(
+                        "%1 explain%2 %3 of the positioning residual (%4 → %5 µm RMS); the "
+                        "rest, against %6 µm reading noise: %7")
+                        .arg(result.causes.join(QStringLiteral(" and ")),
+                             result.causes.size() > 1 ? QString() : QStringLiteral("s"),
+                             percent(positioningExplained))
+                        .arg(result.base_test.error_rms_um, 0, 'f', 2)
+                        .arg(adopted->test_summary.error_rms_um, 0, 'f', 2)
+                        .arg(adopted->test_summary.error_noise_um, 0, 'f', 2)
+                        .arg(describeStructure(adopted->test, test.runs));
         } else if (result.base_test.atNoiseLevel()) {
             result.verdict = QStringLiteral("none");
             result.verdict_evidence =
@@ -228,24 +285,23 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
                 QStringLiteral(
                     "structure remains that no candidate explains: %1; positioning "
                     "residual %2 µm RMS against %3 µm reading noise")
-                    .arg(describeStructure(baseTest.residuals, test.runs))
+                    .arg(describeStructure(result.base_residuals, test.runs))
                     .arg(result.base_test.error_rms_um, 0, 'f', 2)
                     .arg(result.base_test.error_noise_um, 0, 'f', 2);
-            if (named) {
-                const Finding& partial = result.findings.front();
+            if (adopted)
                 result.verdict_evidence +=
                     QStringLiteral(
-                        "; %1 would remove %2 % of it but leaves %3 µm RMS and %4 K "
-                        "RMS on %5 (noise %6 K), well above the noise, so it is not "
-                        "the whole cause")
-                        .arg(partial.cause)
-                        .arg(100 * partial.reduction, 0, 'f', 0)
-                        .arg(partial.test_after.error_rms_um, 0, 'f', 2)
-                        .arg(partial.test_after.worst_channel_rms_K, 0, 'f', 3)
-                        .arg(partial.test_after.worst_channel)
-                        .arg(partial.test_after.worst_channel_noise_K, 0, 'f', 3);
-            }
+                        "; %1 would remove %2 of it but leave %3 µm RMS and %4 K RMS on %5 "
+                        "(noise %6 K): they explain part of it, not most")
+                        .arg(causes.join(QStringLiteral(" and ")), percent(explained))
+                        .arg(adopted->test_summary.error_rms_um, 0, 'f', 2)
+                        .arg(adopted->test_summary.worst_channel_rms_K, 0, 'f', 3)
+                        .arg(adopted->test_summary.worst_channel)
+                        .arg(adopted->test_summary.worst_channel_noise_K, 0, 'f', 3);
         }
+    } catch (const Cancelled&) {
+        result.error = QStringLiteral("diagnosis cancelled");
+        return result;
     } catch (const models::ModelError& e) {
         result.error = e.message;
     }

@@ -1,8 +1,10 @@
 #pragma once
 // What the simulation gets wrong, its cause, the extended model and its gain
 // (DESIGN.md section 6): fit the base heat-transfer model on training runs,
-// refit every candidate effect, score all on held-out runs, and name the cause
-// only when the held-out gain is real and the extra parameter is significant.
+// refit every candidate effect, score all on held-out runs on the quantity
+// each effect shows in, name the cause when its gain is real and significant
+// and it explains most of what the base model leaves; then test the rest again
+// on top of the adopted extension, so a second effect is found too.
 
 #include <QStringList>
 #include <functional>
@@ -10,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/diagnosis/CandidateEffects.h"
 #include "core/diagnosis/ResidualStructure.h"
 #include "core/domain/Campaign.h"
 #include "core/models/HeatTransferModel.h"
@@ -18,33 +21,48 @@ namespace driftlab::diagnosis {
 
 struct DiagnosisOptions {
     QStringList train_runs, test_runs;  ///< both empty: split automatically
-    /// An extension is significant when it lowers BIC on the training runs by
-    /// more than this (≈ "very strong" evidence in Kass & Raftery's scale) …
+    /// An extension is significant when it lowers BIC on the training runs,
+    /// of the quantity it shows in, by more than this (≈ "very strong"
+    /// evidence in Kass & Raftery's scale) …
     double min_bic_drop = 10;
-    /// … and removes at least this share of the held-out residual.
+    /// … and removes at least this share of that quantity's held-out residual.
     double min_test_gain = 0.05;
-    /// A cause is named only when its extension leaves the held-out residual
-    /// within this many times the reading noise (see leavesOnlyNoise); more
-    /// left over means the candidate explains part of something else
-    /// (verdict `unexplained`).
+    /// A significant extension is named when it leaves the held-out residual
+    /// within this many times the reading noise (see leavesOnlyNoise) …
     double max_residual_over_noise = 2;
+    /// … or removes at least this share of it (then what remains is described).
+    double min_explained = 0.6;
+    /// A second cause is named on top of the first when it removes at least
+    /// this share of what the first one leaves.
+    double min_second_gain = 0.2;
     std::function<bool(double fraction)> progress;  ///< false cancels
+};
+
+/// The held-out gain of an extension on the quantity its effect shows in:
+/// the positioning error for effects on the axis or the interferometer, the
+/// sensor's own temperature for sensor effects.
+struct Gain {
+    QString quantity;  ///< "positioning" or "temperature:<channel>"
+    QString unit;      ///< "µm" or "K"
+    double test_rms_before = 0, test_rms_after = 0;
+    double reduction = 0;  ///< 1 − after/before
 };
 
 struct Finding {
     QString cause;
-    QString parameter_name;
-    models::Parameter parameter;
+    /// 1: tested on the base model; 2: on top of the cause adopted in step 1.
+    int step = 1;
+    CandidateEffect effect;
+    /// The effect's own fitted parameters, in its order.
+    std::vector<std::pair<QString, models::Parameter>> parameters;
     double confidence = 0;
     bool significant = false;
-    double bic_drop = 0;
+    double bic_drop = 0;  ///< on the training runs, of the gain's quantity
     QString evidence;
-    /// 1 − √(χ²_after/χ²_before) on the held-out runs, temperatures and
-    /// positioning errors together (a sensor effect shows in temperatures).
-    double reduction = 0;
-    /// What the extension leaves on the held-out runs (the base model's is
-    /// DiagnosisResult::base_test).
-    ResidualSummary test_after;
+    Gain gain;
+    /// Both quantities on the held-out runs before (the step's base) and after.
+    ResidualSummary test_before, test_after;
+    std::vector<models::ReadingResiduals> test_residuals;  ///< what the extension leaves
     models::FitSummary fit;
     std::shared_ptr<const models::HeatTransferModel> model;  ///< the fitted extension
 };
@@ -55,14 +73,25 @@ struct DiagnosisResult {
     QStringList train_runs, test_runs;
     models::FitSummary base_fit;
     ResidualSummary base_test;
-    std::vector<Finding> findings;  ///< sorted by held-out reduction, best first
-    QString verdict;                ///< a cause id, "none" or "unexplained"
-    QString verdict_evidence;       ///< for none/unexplained: what the residual is
+    /// Step 1 sorted by held-out gain, best first, then step 2 likewise.
+    std::vector<Finding> findings;
+    QStringList causes;        ///< the adopted causes in the order found
+    QString verdict;           ///< the first cause, "none" or "unexplained"
+    QString verdict_evidence;  ///< for none/unexplained: what the residual is
+    /// With a cause: what the adopted extension leaves when it is more than
+    /// noise, where it sits and what it follows.
+    QString remaining;
     /// The base residuals on the test runs (for the residual map).
     std::vector<models::ReadingResiduals> base_residuals;
     /// The adopted extension's residuals on the test runs (empty without a cause).
     std::vector<models::ReadingResiduals> adopted_residuals;
 };
+
+/// The finding of an adopted cause (the step it was adopted in), or nullptr.
+const Finding* adoptedFinding(const DiagnosisResult& result, const QString& cause);
+
+/// "dh_800rpm = 3.1 ± 0.2 W/(m²·K), m = 1.4 ± 0.1".
+QString parametersText(const Finding& finding);
 
 /// Runs split automatically: the last 40 % (at least one) of the feed-axis
 /// runs are the test runs, the rest train; no run is in both.

@@ -49,6 +49,21 @@ double temperatureNoise_K(const std::vector<double>& values) {
     return 1.4826 * median(absolute) / std::sqrt(6.0);
 }
 
+QuantityResidual quantityResidual(const std::vector<models::ReadingResiduals>& residuals,
+                                  const QString& channel) {
+    QuantityResidual q;
+    const auto add = [&q](const std::vector<double>& values) {
+        for (double v : values) q.sum_squares += v * v;
+        q.count += values.size();
+    };
+    for (const auto& r : residuals) {
+        if (channel.isEmpty()) add(r.error_um);
+        for (const auto& sensor : r.sensors)
+            if (!channel.isEmpty() && sensor.channel_id == channel) add(sensor.residual_K);
+    }
+    return q;
+}
+
 bool ResidualSummary::atNoiseLevel(double tolerance) const {
     const bool positioning = !(error_noise_um > 0) || error_rms_um <= tolerance * error_noise_um;
     const bool temperature =

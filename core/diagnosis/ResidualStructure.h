@@ -5,6 +5,7 @@
 // and time the positioning residual sits and what it moves with.
 
 #include <QString>
+#include <cmath>
 #include <vector>
 
 #include "core/models/HeatTransferModel.h"
@@ -33,6 +34,17 @@ struct ResidualSummary {
 
 ResidualSummary summarise(const std::vector<models::ReadingResiduals>& residuals,
                           const std::vector<models::RunData>& runs);
+
+/// What a model leaves of one quantity: the positioning error (`channel`
+/// empty, µm) or one temperature sensor's reading (K).
+struct QuantityResidual {
+    double sum_squares = 0;
+    std::size_t count = 0;
+    double rms() const { return count ? std::sqrt(sum_squares / double(count)) : 0.0; }
+};
+
+QuantityResidual quantityResidual(const std::vector<models::ReadingResiduals>& residuals,
+                                  const QString& channel);
 
 /// Where the positioning residual sits (position band × time band with the
 /// largest mean) and which temperature rise it follows best, in words.

@@ -71,17 +71,6 @@ PiecewiseInput screwSpeedFromFeed(const RunData& run, double until_s, const QStr
     return held(run.feed_mm_min, scale);
 }
 
-PiecewiseInput motorPower(const RunData& run, double until_s, const QString& model) {
-    const PiecewiseInput speed = screwSpeedFromFeed(run, until_s, model);
-    requireSignal(run, run.torque_Nm, model, QStringLiteral("the motor torque"));
-    requireCoverage(run, run.torque_Nm, until_s);
-    PiecewiseInput power = speed;
-    for (std::size_t i = 0; i < power.time_s.size(); ++i)
-        power.value[i] *=
-            std::abs(valueAt(run.torque_Nm, power.time_s[i], run.max_gap_s, run.run_id));
-    return power;
-}
-
 PiecewiseInput spindleSpeed(const RunData& run, double until_s, const QString& model) {
     if (run.spindle_speed_rpm.name.isEmpty())
         throw ModelError(QStringLiteral("model '%1' needs the spindle speed; this campaign has no "

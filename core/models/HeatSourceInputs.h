@@ -1,6 +1,6 @@
 #pragma once
 // The heat-source activities that drive the lag models, as piecewise-constant
-// inputs over a run: screw speed, motor power, spindle speed.
+// inputs over a run: screw speed, spindle speed (friction power: DriveFriction.h).
 
 #include <QString>
 
@@ -18,10 +18,6 @@ PiecewiseInput screwSpeed(const RunData& run, double until_s, const QString& mod
 
 /// Screw speed from the feed_mm_min samples, each held until the next sample.
 PiecewiseInput screwSpeedFromFeed(const RunData& run, double until_s, const QString& model);
-
-/// Motor mechanical power |torque·ω|, W, from the torque_Nm and feed_mm_min
-/// samples, each held until the next sample.
-PiecewiseInput motorPower(const RunData& run, double until_s, const QString& model);
 
 /// Spindle speed, rad/s, from the campaign's speed channel.
 PiecewiseInput spindleSpeed(const RunData& run, double until_s, const QString& model);

@@ -205,8 +205,8 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     ceres::Solver::Options solverOptions;
     solverOptions.linear_solver_type = ceres::DENSE_QR;
     solverOptions.max_num_iterations = options_.max_iterations;
-    solverOptions.function_tolerance = 1e-10;
-    solverOptions.parameter_tolerance = 1e-9;
+    solverOptions.function_tolerance = options_.function_tolerance;
+    solverOptions.parameter_tolerance = options_.parameter_tolerance;
     solverOptions.logging_type = ceres::SILENT;
     CancelCallback cancel([this] { return cancelRequested(); });
     solverOptions.callbacks.push_back(&cancel);

@@ -45,6 +45,10 @@ struct HeatTransferOptions {
     double error_sigma_um = 0.5;
     double huber_sigmas = 3;  ///< residuals beyond this many σ count linearly (robust)
     int max_iterations = 50;
+    /// Ceres stops when the cost changes by less than this share in a step …
+    double function_tolerance = 1e-10;
+    /// … or the parameters by less than this share.
+    double parameter_tolerance = 1e-9;
     bool fit_temperatures = true;  ///< false: positioning errors only
 };
 

@@ -46,12 +46,21 @@ TEST(DiagnoseCli, findsAHiddenSensorLagAndKeepsTheExtension) {
     EXPECT_NEAR(best[QStringLiteral("parameters")][QStringLiteral("tau")].toDouble(), 400, 60);
     EXPECT_GT(best[QStringLiteral("confidence")].toDouble(), 0.5);
     EXPECT_TRUE(best[QStringLiteral("evidence")].toString().contains(QStringLiteral("T_nut")));
+    // A sensor effect's gain is on that sensor's temperature; both quantities
+    // are there, and the reduction is the one their figures give.
     const QJsonObject gain = best[QStringLiteral("gain")].toObject();
-    EXPECT_LT(gain[QStringLiteral("test_rms_after_um")].toDouble(),
-              gain[QStringLiteral("test_rms_before_um")].toDouble());
+    EXPECT_EQ(gain[QStringLiteral("quantity")].toString(), QStringLiteral("temperature:T_nut"));
+    const double before = gain[QStringLiteral("test_rms_before_K")].toDouble();
+    const double after = gain[QStringLiteral("test_rms_after_K")].toDouble();
+    EXPECT_LT(after, before);
+    EXPECT_NEAR(gain[QStringLiteral("reduction")].toDouble(), 1 - after / before, 1e-9);
     EXPECT_GT(gain[QStringLiteral("reduction")].toDouble(), 0.5);
-    // Sorted by held-out gain.
-    for (int i = 1; i < findings.size(); ++i)
+    EXPECT_LT(gain[QStringLiteral("positioning_rms_after_um")].toDouble(),
+              gain[QStringLiteral("positioning_rms_before_um")].toDouble());
+    EXPECT_EQ(d[QStringLiteral("causes")].toArray().first()[QStringLiteral("cause")].toString(),
+              QStringLiteral("sensor_lag:T_nut"));
+    // Step 1 sorted by held-out gain.
+    for (int i = 1; i < findings.size() && findings[i][QStringLiteral("step")].toInt() == 1; ++i)
         EXPECT_LE(findings[i][QStringLiteral("gain")][QStringLiteral("reduction")].toDouble(),
                   findings[i - 1][QStringLiteral("gain")][QStringLiteral("reduction")].toDouble());
     const QJsonArray pngs = d[QStringLiteral("plots")].toArray();

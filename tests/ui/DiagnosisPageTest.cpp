@@ -79,7 +79,7 @@ TEST(DiagnosisPage, namesAHiddenEffectShowsItsEvidenceStoresItAndAdoptsTheExtens
     const auto fits = db::modelFits(*db, 1);
     ASSERT_EQ(fits.size(), 1u);
     EXPECT_EQ(fits[0].model, QStringLiteral("heat-transfer+forced_convection"));
-    EXPECT_TRUE(fits[0].parameters.contains(QStringLiteral("h1")));
+    EXPECT_TRUE(fits[0].parameters.contains(QStringLiteral("dh_800rpm")));
     stored = storedDiagnoses(store);
     ASSERT_EQ(stored.size(), 1u);
     EXPECT_EQ(stored[0].adopted_fit_id, std::optional<qint64>(fits[0].id));

@@ -74,9 +74,9 @@ TEST(ModelsItemModels, findingsAndStoredDiagnosesModelsPassTheTester) {
     testerOn(&findings);
     diagnosis::Finding f;
     f.cause = QStringLiteral("forced_convection");
-    f.parameter_name = QStringLiteral("h1");
-    f.parameter = {0.05, 0.001, QStringLiteral("per rad/s")};
-    f.reduction = 0.9;
+    f.parameters = {{QStringLiteral("dh_800rpm"), {3.5, 0.1, QStringLiteral("W/(m²·K)")}},
+                    {QStringLiteral("m"), {1.4, 0.05, QString()}}};
+    f.gain = {QStringLiteral("positioning"), QStringLiteral("µm"), 3.0, 0.3, 0.9};
     f.evidence = QStringLiteral("convection grows with screw speed");
     diagnosis::Finding g = f;
     g.cause = QStringLiteral("motor_heat");
@@ -85,6 +85,10 @@ TEST(ModelsItemModels, findingsAndStoredDiagnosesModelsPassTheTester) {
     EXPECT_TRUE(findings.index(0, 0).data(Qt::FontRole).value<QFont>().bold());
     EXPECT_FALSE(findings.index(1, 0).data(Qt::FontRole).value<QFont>().bold());
     EXPECT_EQ(findings.index(0, ui::FindingsModel::Gain).data().toString(), QStringLiteral("90.0"));
+    EXPECT_EQ(findings.index(0, ui::FindingsModel::RmsAfter).data().toString(),
+              QStringLiteral("0.30 µm"));
+    EXPECT_EQ(findings.index(0, ui::FindingsModel::Parameter).data().toString(),
+              QStringLiteral("dh_800rpm = 3.5 ± 0.1 W/(m²·K), m = 1.4 ± 0.05"));
     findings.setFindings({}, QStringLiteral("none"));
     EXPECT_EQ(findings.verdictRow(), -1);
 

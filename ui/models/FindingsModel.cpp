@@ -49,18 +49,15 @@ QVariant FindingsModel::data(const QModelIndex& index, int role) const {
         case Significant:
             return f.significant ? tr("yes") : tr("no");
         case Gain:
-            return QString::number(100 * f.reduction, 'f', 1);
+            return QString::number(100 * f.gain.reduction, 'f', 1);
         case RmsAfter:
-            return QString::number(f.test_after.error_rms_um, 'f', 2);
+            return QStringLiteral("%1 %2")
+                .arg(f.gain.test_rms_after, 0, 'f', f.gain.unit == QLatin1String("K") ? 3 : 2)
+                .arg(f.gain.unit);
         case BicDrop:
             return QString::number(f.bic_drop, 'f', 0);
         case Parameter:
-            return QStringLiteral("%1 = %2 ± %3 %4")
-                .arg(f.parameter_name)
-                .arg(f.parameter.value, 0, 'g', 4)
-                .arg(std::isfinite(f.parameter.sigma) ? QString::number(f.parameter.sigma, 'g', 2)
-                                                      : QStringLiteral("?"))
-                .arg(f.parameter.unit);
+            return diagnosis::parametersText(f);
         case Evidence:
             return f.evidence;
         default:
@@ -78,11 +75,11 @@ QVariant FindingsModel::headerData(int section, Qt::Orientation orientation, int
         case Gain:
             return tr("Held-out gain (%)");
         case RmsAfter:
-            return tr("RMS after (µm)");
+            return tr("Held-out RMS after");
         case BicDrop:
             return tr("ΔBIC");
         case Parameter:
-            return tr("Parameter ± σ");
+            return tr("Parameters ± σ");
         case Evidence:
             return tr("Evidence");
         default:

@@ -197,7 +197,14 @@ void DiagnosisPage::show(const DiagnosisOutcome& outcome) {
             .arg(r.verdict.toHtmlEscaped(), r.train_runs.join(','), r.test_runs.join(','))
             .arg(r.base_test.error_rms_um, 0, 'f', 2)
             .arg(r.base_test.error_noise_um, 0, 'f', 2)
-            .arg((named ? named->evidence : r.verdict_evidence).toHtmlEscaped()));
+            .arg((named
+                      ? named->evidence +
+                            (r.causes.size() > 1 ? tr(" Causes in order: %1.")
+                                                       .arg(r.causes.join(QStringLiteral(", ")))
+                                                 : QString()) +
+                            (r.remaining.isEmpty() ? QString() : QStringLiteral(" ") + r.remaining)
+                      : r.verdict_evidence)
+                     .toHtmlEscaped()));
     m_findings->setFindings(r.findings, r.verdict);
     if (m_findings->verdictRow() >= 0) m_findingsView->selectRow(m_findings->verdictRow());
     {

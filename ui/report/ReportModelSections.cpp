@@ -72,21 +72,29 @@ void addDiagnosis(ReportDocument& doc, const DiagnosisSection& s) {
             .arg(r.base_test.error_peak_um, 0, 'f', 2)
             .arg(r.base_test.error_noise_um, 0, 'f', 2));
     if (!r.verdict_evidence.isEmpty()) doc.paragraph(r.verdict_evidence);
+    if (r.causes.size() > 1)
+        doc.paragraph(
+            QStringLiteral("Causes found, in order: %1.").arg(r.causes.join(QStringLiteral(", "))));
+    // The evidence of each cause in words; the table below has every candidate's figures.
+    for (const QString& cause : r.causes)
+        if (const auto* f = diagnosis::adoptedFinding(r, cause))
+            doc.paragraph(
+                QStringLiteral("%1 (step %2): %3").arg(cause).arg(f->step).arg(f->evidence));
+    if (!r.remaining.isEmpty()) doc.paragraph(r.remaining);
     Table findings{QStringLiteral("diagnosis-findings"),
-                   {QStringLiteral("Cause"), QStringLiteral("Confidence"),
-                    QStringLiteral("Significant"), QStringLiteral("Parameter"),
-                    QStringLiteral("RMS before µm"), QStringLiteral("RMS after µm"),
-                    QStringLiteral("Held-out gain"), QStringLiteral("Evidence")},
+                   {QStringLiteral("Cause"), QStringLiteral("Step"), QStringLiteral("Confidence"),
+                    QStringLiteral("Significant"), QStringLiteral("Parameters"),
+                    QStringLiteral("Quantity"), QStringLiteral("RMS before"),
+                    QStringLiteral("RMS after"), QStringLiteral("Held-out gain")},
                    {}};
     for (const diagnosis::Finding& f : r.findings)
-        findings.rows.push_back(
-            {text(f.cause), number(f.confidence, 2),
-             text(f.significant ? QStringLiteral("yes") : QStringLiteral("no")),
-             text(
-                 QStringLiteral("%1 = %2").arg(f.parameter_name).arg(f.parameter.value, 0, 'g', 4)),
-             number(r.base_test.error_rms_um, 2), number(f.test_after.error_rms_um, 2),
-             number(f.reduction, 3), text(f.evidence)});
-    doc.subheading(QStringLiteral("Findings, by held-out gain"));
+        findings.rows.push_back({text(f.cause), number(f.step, 0), number(f.confidence, 2),
+                                 text(f.significant ? QStringLiteral("yes") : QStringLiteral("no")),
+                                 text(diagnosis::parametersText(f)),
+                                 text(f.gain.quantity + QStringLiteral(", ") + f.gain.unit),
+                                 number(f.gain.test_rms_before, 3),
+                                 number(f.gain.test_rms_after, 3), number(f.gain.reduction, 3)});
+    doc.subheading(QStringLiteral("Findings: step 1, then step 2, each by held-out gain"));
     doc.table(findings);
     for (std::size_t k = 0; k < r.base_residuals.size(); ++k) {
         const QString run = r.base_residuals[k].run_id;

@@ -1,0 +1,166 @@
+#include "core/diagnosis/CandidateScoring.h"
+
+#include <cmath>
+
+namespace driftlab::diagnosis {
+namespace {
+
+std::vector<models::ReadingResiduals> residualsOf(const models::HeatTransferModel& model,
+                                                  const std::vector<models::RunData>& runs) {
+    std::vector<models::ReadingResiduals> out;
+    for (const auto& run : runs) out.push_back(model.residuals(run));
+    return out;
+}
+
+double value(const Finding& f, std::size_t i) {
+    return i < f.parameters.size() ? f.parameters[i].second.value : std::nan("");
+}
+
+/// Whether a fitted exponent differs from `assumed` by more than 2σ and 0.1.
+bool differs(const models::Parameter& p, double assumed) {
+    const double margin = std::isfinite(p.sigma) ? std::max(2 * p.sigma, 0.1) : 0.1;
+    return std::abs(p.value - assumed) > margin;
+}
+
+QString effectWords(const Finding& f) {
+    const QString base = f.cause.section(QLatin1Char(':'), 0, 0);
+    const double v = value(f, 0);
+    if (base == QLatin1String("forced_convection")) {
+        if (f.parameters.size() < 2)
+            return QStringLiteral(
+                       "convection grows with screw speed: h rises by %1 W/(m²·K) at 800 rpm "
+                       "(in proportion to speed: the training runs move at one speed, so the "
+                       "speed law cannot be told)")
+                .arg(v, 0, 'f', 1);
+        const auto& m = f.parameters.at(1).second;
+        return QStringLiteral(
+                   "convection grows with screw speed: h rises by %1 W/(m²·K) at 800 rpm, "
+                   "as speed^%2%3")
+            .arg(v, 0, 'f', 1)
+            .arg(m.value, 0, 'f', 2)
+            .arg(differs(m, 1) ? QStringLiteral(" (not in proportion to speed: the speed law "
+                                                "is not the one the base library assumed)")
+                               : QString());
+    }
+    if (base == QLatin1String("nut_heat_exponent"))
+        return QStringLiteral(
+                   "nut friction power grows as speed^%1, not in proportion: at 1500 rpm the "
+                   "nut makes %2× the heat a linear law predicts")
+            .arg(v, 0, 'f', 2)
+            .arg(std::pow(1500.0 / 800.0, v - 1), 0, 'f', 2);
+    if (base == QLatin1String("motor_heat"))
+        return QStringLiteral("the servo motor heats the fixed end: %1 W per (N·m)² of torque")
+            .arg(v, 0, 'g', 3);
+    if (base == QLatin1String("sensor_lag"))
+        return QStringLiteral(
+                   "sensor %1 follows the screw with a first-order lag of %2 s: it reads low "
+                   "while the screw warms and high while it cools")
+            .arg(f.effect.channel)
+            .arg(v, 0, 'f', 0);
+    if (base == QLatin1String("sensor_offset"))
+        return QStringLiteral("sensor %1 reads %2 K %3 throughout")
+            .arg(f.effect.channel)
+            .arg(std::abs(v), 0, 'f', 2)
+            .arg(v > 0 ? QStringLiteral("high") : QStringLiteral("low"));
+    if (base == QLatin1String("air_refraction"))
+        return QStringLiteral(
+                   "the interferometer reading follows the air temperature over the beam "
+                   "path (x + dead path): %1 of the Edlén correction (−0.95 ppm/K) is missing")
+            .arg(v, 0, 'f', 2);
+    if (base == QLatin1String("frame_growth"))
+        return QStringLiteral(
+                   "the axis zero moves with the structure temperature by %1 µm/K, the same "
+                   "at every position, lagging the structure sensor by %2 min")
+            .arg(v, 0, 'f', 2)
+            .arg(value(f, 1) / 60, 0, 'f', 0);
+    return f.cause;
+}
+
+}  // namespace
+
+StepBase makeStepBase(std::vector<CandidateEffect> effects,
+                      std::shared_ptr<const models::HeatTransferModel> model,
+                      const std::vector<models::RunData>& train,
+                      const std::vector<models::RunData>& test) {
+    StepBase b{std::move(effects), std::move(model), {}, {}, {}};
+    b.train = residualsOf(*b.model, train);
+    b.test = residualsOf(*b.model, test);
+    b.test_summary = summarise(b.test, test);
+    return b;
+}
+
+std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffect& candidate,
+                                      const std::vector<double>& ownStart, int step,
+                                      const StepData& data) {
+    std::vector<CandidateEffect> effects = base.effects;
+    effects.push_back(candidate);
+    std::vector<double> start = base.model->values();
+    start.insert(start.end(), ownStart.begin(), ownStart.end());
+    auto model = std::make_shared<models::HeatTransferModel>(base.model->options(),
+                                                             extendedModel(effects, start));
+    model->setCancelCheck(data.cancelled);
+    Finding f;
+    f.cause = candidate.cause;
+    f.step = step;
+    f.effect = candidate;
+    f.fit = model->fit(data.train);
+    if (!f.fit.success || data.cancelled()) return std::nullopt;
+    for (const auto& p : candidate.parameters)
+        f.parameters.emplace_back(p.name, f.fit.parameters.at(p.name));
+    f.model = model;
+
+    const auto train = residualsOf(*model, data.train);
+    const auto test = residualsOf(*model, data.test);
+    f.test_before = base.test_summary;
+    f.test_after = summarise(test, data.test);
+    f.test_residuals = test;
+    const QString& channel = candidate.channel;
+    f.gain.quantity = channel.isEmpty() ? QStringLiteral("positioning")
+                                        : QStringLiteral("temperature:") + channel;
+    f.gain.unit = channel.isEmpty() ? QStringLiteral("µm") : QStringLiteral("K");
+    f.gain.test_rms_before = quantityResidual(base.test, channel).rms();
+    f.gain.test_rms_after = quantityResidual(test, channel).rms();
+    f.gain.reduction =
+        f.gain.test_rms_before > 0 ? 1 - f.gain.test_rms_after / f.gain.test_rms_before : 0;
+    // BIC with the noise variance estimated, on the gain's quantity:
+    // N·ln(S₀/S₁) − k·ln N for the k parameters the effect adds.
+    const QuantityResidual before = quantityResidual(base.train, channel);
+    const QuantityResidual after = quantityResidual(train, channel);
+    const double n = double(after.count);
+    f.bic_drop = after.sum_squares > 0 && before.sum_squares > 0
+                     ? n * std::log(before.sum_squares / after.sum_squares) -
+                           double(candidate.parameters.size()) * std::log(n)
+                     : 0;
+    // A sensor effect that buys its gain on one sensor by making the
+    // positioning error worse is a fit compromise, not a cause.
+    const bool harmless =
+        channel.isEmpty() || f.test_after.error_rms_um <= 1.02 * f.test_before.error_rms_um + 0.02;
+    f.significant = harmless && f.bic_drop > data.options.min_bic_drop &&
+                    f.gain.reduction > data.options.min_test_gain;
+    f.evidence = evidenceFor(f, data.test_ids);
+    return f;
+}
+
+QString evidenceFor(const Finding& f, const QStringList& testRuns) {
+    const QString runs = testRuns.join(QStringLiteral(", "));
+    const QString quantity =
+        f.gain.quantity == QLatin1String("positioning")
+            ? QStringLiteral("positioning residual")
+            : QStringLiteral("residual of %1").arg(f.gain.quantity.section(QLatin1Char(':'), 1));
+    return effectWords(f) +
+           QStringLiteral(
+               "; on held-out runs %1 the %2 goes from %3 to %4 %5 RMS (%6 % less); the "
+               "positioning residual from %7 to %8 µm RMS and the screw-temperature residual "
+               "from %9 to %10 K RMS")
+               .arg(runs, quantity)
+               .arg(f.gain.test_rms_before, 0, 'f', f.gain.unit == QLatin1String("K") ? 3 : 2)
+               .arg(f.gain.test_rms_after, 0, 'f', f.gain.unit == QLatin1String("K") ? 3 : 2)
+               .arg(f.gain.unit)
+               .arg(100 * f.gain.reduction, 0, 'f', 0)
+               .arg(f.test_before.error_rms_um, 0, 'f', 2)
+               .arg(f.test_after.error_rms_um, 0, 'f', 2)
+               .arg(f.test_before.temperature_rms_K, 0, 'f', 3)
+               .arg(f.test_after.temperature_rms_K, 0, 'f', 3);
+}
+
+}  // namespace driftlab::diagnosis
