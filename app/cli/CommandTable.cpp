@@ -198,7 +198,7 @@ QString usageText() {
         "Wherever a BUNDLE is taken, --db FILE --campaign ID may be given instead.\n"
         "Progress goes to stderr, results to stdout (--json for scripts).\n"
         "Exit codes: 0 done, 1 failed (last stderr line says why), 2 usage error,\n"
-        "            3 command not built yet in this version.\n");
+        "            3 run aborted with Ctrl-C (the run is kept, interrupted).\n");
     return text;
 }
 

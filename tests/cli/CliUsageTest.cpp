@@ -45,7 +45,8 @@ TEST(CliUsage, helpPrintsTheCommandsAndExitCodesOnStdout) {
         EXPECT_TRUE(help.contains("\n  " + name.toUtf8() + ' ')) << qPrintable(name);
     EXPECT_TRUE(
         help.contains("Exit codes: 0 done, 1 failed (last stderr line says why), 2 usage "
-                      "error,\n            3 command not built yet in this version.\n"));
+                      "error,\n            3 run aborted with Ctrl-C (the run is kept, "
+                      "interrupted).\n"));
     for (const char* spelling : {"--help", "-h", "help"}) {
         CliResult r = runCli({QLatin1String(spelling)});
         EXPECT_EQ(r.exitCode, 0) << spelling;
