@@ -84,8 +84,8 @@ run_main_job() {
     logged=$("$cli" run --procedure "$procedures/iso230-3-x-axis.json" --rig sim --db "$out/driftlab.sqlite")
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$logged" | tail -n 3
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$logged" --model heat-transfer | tail -n 1
-    log "main job 3/18: simulating a five-state campaign on the built-in rig"
-    "$cli" simulate --out "$out/campaign" --plots "$out/plots" --spindle --seed 1 >/dev/null
+    log "main job 3/18: simulating a five-state campaign on the built-in rig, with six ISO 230-3 spindle runs of different speed programmes"
+    "$cli" simulate --out "$out/campaign" --plots "$out/plots" --spindle-runs 6 --seed 1 >/dev/null
     log "main job 4/18: zipping the bundle as a user mails it, importing the zip into the same store (checked, then one transaction)"
     (cd "$out" && zip -qr campaign.zip campaign)
     local id
@@ -114,6 +114,11 @@ run_main_job() {
     log "main job 10/18: ISO 230-3 thermal drift of S1's targets and the spindle run's probes: maximum, when, time to stabilise"
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run SP1
+    log "the spindle's z drift lags every sensor: fit --model auto chooses family and inputs on SP1-SP3 alone, scored on SP4-SP6 (next to it, the static regression mlr)"
+    "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model auto --target D_z \
+        --train SP1,SP2,SP3 --test SP4,SP5,SP6
+    "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model mlr --target D_z \
+        --train SP1,SP2,SP3 --test SP4,SP5,SP6 | tail -n 1
     log "main job 11/18: compensation tables from S1's interferometer readings for LinuxCNC and Sinumerik, in $out/compensation/"
     mkdir -p "$out/compensation"
     "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --format linuxcnc \

@@ -21,7 +21,7 @@ std::unique_ptr<models::ThermalErrorModel> makeModelOrFail(const QString& name) 
     auto model = models::makeModel(name);
     if (!model)
         throw CliError(QStringLiteral("--model: '%1' is not a model (%2)")
-                           .arg(name, models::modelNames().join(", ")),
+                           .arg(name, models::fitModelNames().join(", ")),
                        2);
     return model;
 }

@@ -26,7 +26,10 @@ const QCommandLineOption kTargetOption{
 int fitCommand(const QStringList& args) {
     QCommandLineParser parser;
     const QCommandLineOption model{
-        QStringLiteral("model"), QStringLiteral("Model: %1.").arg(models::modelNames().join(", ")),
+        QStringLiteral("model"),
+        QStringLiteral("Model: %1, or auto (chooses the family and inputs by cross-validation "
+                       "over the training runs and says what it chose).")
+            .arg(models::modelNames().join(", ")),
         QStringLiteral("NAME")};
     const QCommandLineOption train{
         QStringLiteral("train"),

@@ -30,11 +30,16 @@ int simulateCommand(const QStringList& args) {
         QStringLiteral("IDS")};
     const QCommandLineOption spindle{QStringLiteral("spindle"),
                                      QStringLiteral("Add an ISO 230-3 spindle run (SP1).")};
+    const QCommandLineOption spindleRuns{
+        QStringLiteral("spindle-runs"),
+        QStringLiteral("Add N spindle runs SP1…SPN, each with its own speed programme (1–9)."),
+        QStringLiteral("N")};
     const QCommandLineOption plots{
         QStringLiteral("plots"),
         QStringLiteral("Write PNG plots of the first run's true screw state into DIR."),
         QStringLiteral("DIR")};
-    parseArguments(parser, args, {out, effect, seed, runs, spindle, plots}, {{}, {}, {}, {out}});
+    parseArguments(parser, args, {out, effect, seed, runs, spindle, spindleRuns, plots},
+                   {{}, {}, {}, {out}});
 
     rig::RigSpec spec;
     bool seedOk = false;
@@ -55,7 +60,13 @@ int simulateCommand(const QStringList& args) {
         }
         spec.runs = chosen;
     }
-    spec.spindle_run = parser.isSet(spindle);
+    spec.spindle_runs = parser.isSet(spindle) ? 1 : 0;
+    if (parser.isSet(spindleRuns)) {
+        bool ok = false;
+        spec.spindle_runs = parser.value(spindleRuns).toInt(&ok);
+        if (!ok || spec.spindle_runs < 1 || spec.spindle_runs > 9)
+            throw CliError(QStringLiteral("--spindle-runs: not a number of runs from 1 to 9"), 2);
+    }
 
     rig::SimulationCallbacks callbacks;
     callbacks.progress = [](double f) { return printProgress(QStringLiteral("simulating"), f); };

@@ -70,7 +70,7 @@ ThermalProfile thermalProfile(const QCommandLineParser& parser, const Campaign& 
     auto model = models::makeModel(parser.value(kModel));
     if (!model)
         throw CliError(QStringLiteral("--model: '%1' is not a model (%2)")
-                           .arg(parser.value(kModel), models::modelNames().join(", ")),
+                           .arg(parser.value(kModel), models::fitModelNames().join(", ")),
                        2);
     models::DatasetResult data = models::buildDataset(campaign, train + QStringList{stateRun});
     if (!data.ok()) throw CliError(data.error);

@@ -50,10 +50,10 @@ double crossValidatedRms(const Eigen::MatrixXd& X, const Eigen::VectorXd& y,
     return std::sqrt(heldOutSquares / double(folds.size()));
 }
 
-std::size_t simplestNearBest(const std::vector<double>& scores) {
+std::size_t simplestNearBest(const std::vector<double>& scores, double tolerance) {
     const auto best = std::min_element(scores.begin(), scores.end());
     if (best == scores.end() || !std::isfinite(*best)) return scores.size();
-    const double acceptable = *best * 1.02 + 1e-6;
+    const double acceptable = *best * (1 + tolerance) + 1e-6;
     for (std::size_t i = 0; i < scores.size(); ++i)
         if (scores[i] <= acceptable) return i;
     return scores.size();

@@ -21,9 +21,9 @@ std::vector<int> crossValidationFolds(const std::vector<RunData>& runs, int time
 double crossValidatedRms(const Eigen::MatrixXd& X, const Eigen::VectorXd& y,
                          const std::vector<int>& folds);
 
-/// Of candidates ordered simplest first, the simplest whose score is within 2 %
-/// (or 1e-6 µm, far below any measurement) of the best: a more complex model
-/// must earn its place. Returns scores.size() when no score is finite.
-std::size_t simplestNearBest(const std::vector<double>& scores);
+/// Of candidates ordered simplest first, the simplest whose score is within
+/// `tolerance` (2 %; or 1e-6 µm, far below any measurement) of the best: a more
+/// complex model must earn its place. Returns scores.size() when no score is finite.
+std::size_t simplestNearBest(const std::vector<double>& scores, double tolerance = 0.02);
 
 }  // namespace driftlab::models

@@ -4,6 +4,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/models/AutoModel.h"
+#include "core/models/DynamicRegressionModel.h"
 #include "core/models/ExponentialModel.h"
 #include "core/models/HeatTransferModel.h"
 #include "core/models/MlrModel.h"
@@ -23,6 +25,7 @@ const std::vector<std::pair<QString, Maker>>& registry() {
         {QStringLiteral("exponential"), [] { return std::make_unique<ExponentialModel>(); }},
         {QStringLiteral("heat-transfer"), [] { return std::make_unique<HeatTransferModel>(); }},
         {QStringLiteral("sensorless"), [] { return std::make_unique<SensorlessModel>(); }},
+        {QStringLiteral("arx"), [] { return std::make_unique<DynamicRegressionModel>(); }},
     };
     return models;
 }
@@ -35,7 +38,12 @@ QStringList modelNames() {
     return names;
 }
 
+QStringList fitModelNames() {
+    return modelNames() << QStringLiteral("auto");
+}
+
 std::unique_ptr<ThermalErrorModel> makeModel(const QString& name) {
+    if (name == QLatin1String("auto")) return std::make_unique<AutoModel>();
     for (const auto& [known, make] : registry())
         if (known == name) return make();
     return nullptr;

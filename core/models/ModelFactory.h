@@ -12,6 +12,10 @@ namespace driftlab::models {
 /// The names makeModel knows, in the order a comparison lists them.
 QStringList modelNames();
 
+/// The names a single fit can ask for: the families and "auto", which chooses
+/// one of them by cross-validation on the training runs (AutoModel).
+QStringList fitModelNames();
+
 /// A model with default options, or nullptr for an unknown name.
 std::unique_ptr<ThermalErrorModel> makeModel(const QString& name);
 

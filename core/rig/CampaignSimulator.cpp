@@ -26,7 +26,7 @@ struct RunContext {
 
 void validateSpec(const RigSpec& spec, const physics::ScrewThermalParameters& screw) {
     screw.validate();
-    if (spec.runs.empty() && !spec.spindle_run)
+    if (spec.runs.empty() && spec.spindle_runs < 1)
         throw std::invalid_argument("simulated rig: no runs to simulate");
     if (!(spec.sample_interval_s > 0) || !(spec.physics_step_s > 0))
         throw std::invalid_argument(
@@ -187,7 +187,7 @@ Campaign rigCampaignHeader(const RigSpec& spec, bool withSpindleChannels) {
 Campaign simulateCampaign(const RigSpec& spec, const SimulationCallbacks& callbacks) {
     const physics::ScrewThermalParameters screw = effectiveScrewParameters(spec);
     validateSpec(spec, screw);
-    Campaign campaign = rigCampaignHeader(spec, spec.spindle_run);
+    Campaign campaign = rigCampaignHeader(spec, spec.spindle_runs > 0);
 
     std::mt19937_64 rng(spec.seed);
     const double pitchPhase_rad = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
@@ -201,8 +201,8 @@ Campaign simulateCampaign(const RigSpec& spec, const SimulationCallbacks& callba
         campaign.runs.push_back(simulateMovingRun(ctx, state, static_cast<unsigned>(rng())));
         done_s += state.warmup_s + state.cooldown_s;
     }
-    if (spec.spindle_run) {
-        SpindleTestSpec spindle;
+    for (int k = 1; k <= spec.spindle_runs; ++k) {
+        SpindleTestSpec spindle = spindleTestProgramme(k);
         spindle.seed = static_cast<unsigned>(rng());
         campaign.runs.push_back(simulateSpindleTest(spindle, campaign.sample_columns));
     }

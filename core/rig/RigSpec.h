@@ -79,7 +79,9 @@ struct RigSpec {
     double sample_interval_s = 10;
     double physics_step_s = 1;
     std::vector<MovingStateRun> runs = defaultMovingStates();
-    bool spindle_run = false;
+    /// ISO 230-3 spindle runs after the moving states: SP1 … SP<n>, each its own
+    /// speed programme (spindleTestProgramme).
+    int spindle_runs = 0;
     RigEffects effects;
     RigChannelNames names;
     AxisDriveSpec drive;

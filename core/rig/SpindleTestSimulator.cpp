@@ -6,52 +6,85 @@
 #include <random>
 
 #include "core/rig/SensorModel.h"
+#include "core/rig/SpindleThermalNetwork.h"
 
 namespace driftlab::rig {
 namespace {
 
-// Housing: fast node heated by bearing friction ∝ n^1.4; column: slow node
-// heated by the housing. Time constants and gains chosen to give the tens of µm
-// of axial (z) drift typical of a machining-centre spindle at 9000 rpm.
-constexpr double kHousingTau_s = 900;
-constexpr double kColumnTau_s = 5400;
-constexpr double kHousingRiseAt10000rpm_K = 14;
-constexpr double kColumnCoupling = 0.45;
+/// The drift probes' view of the head and column rises (K): the shaft carries
+/// the tool, the column core sets where the head sits.
+struct DriftGains {
+    double shaft, housing, columnSkin, columnCore;
+};
+constexpr DriftGains kDriftX{0.3, 0.1, 0, 0};
+constexpr DriftGains kDriftY{0, 0, -0.3, -2.0};
+constexpr DriftGains kDriftZ{-3.0, -0.6, 0, -5.0};
+constexpr DriftGains kTiltA{0, 0, 0, -0.35};
+constexpr DriftGains kTiltB{0.05, 0.05, 0, 0};
 
-double steadyHousingRise(double speed_rpm) {
-    return kHousingRiseAt10000rpm_K * std::pow(std::abs(speed_rpm) / 10000.0, 1.4);
-}
+/// The sensors' thermal contact: a real sensor screwed onto a casting lags it.
+constexpr double kSensorLag_s = 30;
 
 }  // namespace
 
 std::vector<Channel> spindleTestChannels() {
-    auto probe = [](const char* id, ChannelRole role, const char* where) {
-        return Channel{QString::fromLatin1(id),
-                       Quantity::Displacement,
-                       role,
-                       QString::fromLatin1(where),
-                       {},
-                       {}};
+    auto channel = [](const char* id, Quantity quantity, ChannelRole role, const char* where) {
+        return Channel{QString::fromLatin1(id), quantity, role, QString::fromUtf8(where), {}, {}};
+    };
+    auto temperature = [&](const char* id, ChannelRole role, const char* where) {
+        return channel(id, Quantity::Temperature, role, where);
+    };
+    auto probe = [&](const char* id, ChannelRole role, const char* where) {
+        return channel(id, Quantity::Displacement, role, where);
     };
     return {
-        {QStringLiteral("T_spindle"),
-         Quantity::Temperature,
-         ChannelRole::Spindle,
-         QStringLiteral("spindle housing"),
-         {},
-         {}},
-        {QStringLiteral("S_speed"),
-         Quantity::Speed,
-         ChannelRole::Spindle,
-         QStringLiteral("spindle drive"),
-         {},
-         {}},
+        temperature("T_spindle", ChannelRole::Spindle, "spindle housing, front"),
+        channel("S_speed", Quantity::Speed, ChannelRole::Spindle, "spindle drive"),
         probe("D_x", ChannelRole::DriftX, "test mandrel, x probe"),
         probe("D_y", ChannelRole::DriftY, "test mandrel, y probe"),
         probe("D_z", ChannelRole::DriftZ, "test mandrel face, z probe"),
         probe("D_a", ChannelRole::TiltA, "test mandrel, second y probe (tilt about x)"),
         probe("D_b", ChannelRole::TiltB, "test mandrel, second x probe (tilt about y)"),
+        temperature("T_spindle_bearing", ChannelRole::Spindle, "front bearing seat"),
+        temperature("T_spindle_motor", ChannelRole::Spindle, "spindle motor stator"),
+        temperature("T_headstock", ChannelRole::Spindle, "headstock, rear"),
+        temperature("T_column", ChannelRole::Other, "column surface beside the headstock"),
     };
+}
+
+SpindleTestSpec spindleTestProgramme(int index) {
+    SpindleTestSpec spec;
+    spec.run_id = QStringLiteral("SP%1").arg(index);
+    spec.seed = unsigned(index);
+    switch (index) {
+        case 1:  // the default: three speeds with a stop between
+            break;
+        case 2:  // fast first, then down
+            spec.blocks = {{2400, 9000}, {1800, 4500}, {1800, 0}, {1800, 6000}, {2400, 0}};
+            break;
+        case 3:  // short cycles, as a job shop runs
+            spec.blocks.clear();
+            for (int k = 0; k < 6; ++k) spec.blocks.push_back({600, k % 2 ? 0.0 : 8000.0});
+            spec.blocks.push_back({3600, 0});
+            break;
+        case 4:  // a ramp of speeds
+            spec.blocks = {{1200, 2000}, {1200, 4000}, {1200, 6000}, {1200, 8000}, {3600, 0}};
+            break;
+        case 5:
+            spec.blocks = {{3600, 6000}, {1200, 0}, {1200, 9000}, {3600, 0}};
+            break;
+        default: {  // a speed spectrum: blocks of random speed and length
+            std::mt19937 rng(unsigned(index) * 7919u);
+            std::uniform_int_distribution<int> minutes(10, 20), speed(0, 9);
+            spec.blocks.clear();
+            for (double total_s = 0; total_s < 9000;) {
+                spec.blocks.push_back({60.0 * minutes(rng), 1000.0 * speed(rng)});
+                total_s += spec.blocks.back().duration_s;
+            }
+            spec.blocks.push_back({3600, 0});
+        }
+    }
+    return spec;
 }
 
 Run simulateSpindleTest(const SpindleTestSpec& spec, const std::vector<QString>& sampleColumns) {
@@ -67,16 +100,28 @@ Run simulateSpindleTest(const SpindleTestSpec& spec, const std::vector<QString>&
 
     std::mt19937_64 rng(spec.seed);
     std::normal_distribution<double> probeNoise(0.0, 0.1);
-    SensorModel spindleSensor({}, spec.seed + 1);
-    SensorModel ambientSensor({}, spec.seed + 2);
     const double nan = std::numeric_limits<double>::quiet_NaN();
 
-    // Which simulated value each sample column carries (-1: not logged in this run).
-    const char* ids[] = {"T_spindle", "S_speed", "D_x", "D_y", "D_z", "D_a", "D_b", "T_ambient"};
+    // What each sample column carries; the sensors in the order of `ids`.
+    const char* ids[] = {"T_spindle",
+                         "S_speed",
+                         "D_x",
+                         "D_y",
+                         "D_z",
+                         "D_a",
+                         "D_b",
+                         "T_ambient",
+                         "T_spindle_bearing",
+                         "T_spindle_motor",
+                         "T_headstock",
+                         "T_column"};
     std::vector<int> source(sampleColumns.size(), -1);
     for (std::size_t k = 0; k < sampleColumns.size(); ++k)
         for (int i = 0; i < int(std::size(ids)); ++i)
             if (sampleColumns[k] == QLatin1String(ids[i])) source[k] = i;
+    std::vector<SensorModel> sensors;
+    for (unsigned k = 0; k < 6; ++k)
+        sensors.emplace_back(SensorSpec{kSensorLag_s}, spec.seed + 1 + k);
 
     // Probes resolve 1 nm.
     auto probe = [&](double drift_um) {
@@ -86,42 +131,40 @@ Run simulateSpindleTest(const SpindleTestSpec& spec, const std::vector<QString>&
         return spec.ambient_C + spec.ambient_swing_K *
                                     std::sin(2 * std::numbers::pi * time_s / spec.ambient_period_s);
     };
-    // housing_K and column_K: rises from the spindle's heat; the *Room_C nodes
-    // follow the room. Without a swing the room nodes stay at ambient_C exactly
-    // and add exactly 0, so a constant room gives the same numbers as before.
-    double housing_K = 0, column_K = 0, t = 0, blockStart = 0;
-    double housingRoom_C = spec.ambient_C, columnRoom_C = spec.ambient_C;
-    std::size_t block = 0;
     const double dt = spec.sample_interval_s;
-    double total_s = 0;
+    SpindleThermalNetwork head(spec.ambient_C, dt);
+    auto rise = [&](SpindleNode node) { return head.temperature_C(node) - spec.ambient_C; };
+    auto drift = [&](const DriftGains& g) {
+        return g.shaft * rise(SpindleNode::Shaft) + g.housing * rise(SpindleNode::Housing) +
+               g.columnSkin * rise(SpindleNode::ColumnSkin) +
+               g.columnCore * rise(SpindleNode::ColumnCore);
+    };
+
+    std::size_t block = 0;
+    double total_s = 0, blockStart = 0;
     for (const SpeedBlock& b : spec.blocks) total_s += b.duration_s;
-    for (; t <= total_s + 1e-9; t += dt) {
+    for (double t = 0; t <= total_s + 1e-9; t += dt) {
         while (block + 1 < spec.blocks.size() && t >= blockStart + spec.blocks[block].duration_s)
             blockStart += spec.blocks[block++].duration_s;
         const double speed = t < total_s ? spec.blocks[block].speed_rpm : 0;
-        if (t > 0) {
-            // Exact first-order steps for inputs held over the interval.
-            housing_K = steadyHousingRise(speed) +
-                        (housing_K - steadyHousingRise(speed)) * std::exp(-dt / kHousingTau_s);
-            column_K = kColumnCoupling * housing_K +
-                       (column_K - kColumnCoupling * housing_K) * std::exp(-dt / kColumnTau_s);
-            // The room over the interval, held at its middle value.
-            const double room_C = ambientAt(t - dt / 2);
-            housingRoom_C = room_C + (housingRoom_C - room_C) * std::exp(-dt / kHousingTau_s);
-            columnRoom_C = room_C + (columnRoom_C - room_C) * std::exp(-dt / kColumnTau_s);
-        }
-        const double housingTotal_K = housing_K + (housingRoom_C - spec.ambient_C);
-        const double columnTotal_K = column_K + (columnRoom_C - spec.ambient_C);
-        const double driftZ_um = -(1.6 * housingTotal_K + 2.2 * columnTotal_K);
+        // The speed of the interval just ended and the room at its middle.
+        if (t > 0) head.step(speed, ambientAt(t - dt / 2));
+        auto sensor = [&](int k, SpindleNode node) {
+            return sensors[std::size_t(k)].read(head.temperature_C(node), dt);
+        };
         const double values[] = {
-            spindleSensor.read(spec.ambient_C + housingTotal_K, dt),  // T_spindle
-            speed,                                                    // S_speed
-            probe(0.15 * housingTotal_K),                             // D_x
-            probe(-0.9 * columnTotal_K),                              // D_y
-            probe(driftZ_um),                                         // D_z
-            probe(-0.35 * columnTotal_K),                             // D_a
-            probe(0.05 * housingTotal_K),                             // D_b
-            ambientSensor.read(ambientAt(t), dt),                     // T_ambient
+            sensor(0, SpindleNode::Housing),       // T_spindle
+            speed,                                 // S_speed
+            probe(drift(kDriftX)),                 // D_x
+            probe(drift(kDriftY)),                 // D_y
+            probe(drift(kDriftZ)),                 // D_z
+            probe(drift(kTiltA)),                  // D_a
+            probe(drift(kTiltB)),                  // D_b
+            sensors[1].read(ambientAt(t), dt),     // T_ambient
+            sensor(2, SpindleNode::FrontBearing),  // T_spindle_bearing
+            sensor(3, SpindleNode::Motor),         // T_spindle_motor
+            sensor(4, SpindleNode::Headstock),     // T_headstock
+            sensor(5, SpindleNode::ColumnSkin),    // T_column
         };
         run.samples.time_s.push_back(t);
         for (std::size_t k = 0; k < sampleColumns.size(); ++k)

@@ -1,9 +1,10 @@
 #pragma once
 // ISO 230-3 spindle test on the simulated rig: a speed programme (blocks with
-// stops) heats the spindle housing and, more slowly, the column; five
-// non-contact probes see the tool-side drift (x, y, z) and two tilts.
-// A two-node lumped model: enough structure for the drift models to be fitted,
-// not a finite-element spindle.
+// stops) heats the spindle head and, more slowly, the column
+// (SpindleThermalNetwork); five temperature sensors sit on the head and the
+// column, five non-contact probes see the tool-side drift (x, y, z) and two
+// tilts. The probes see mostly nodes no sensor is on (the shaft, the column
+// core), so the drift lags every sensor, as on a real machine.
 
 #include <QString>
 #include <vector>
@@ -34,6 +35,11 @@ struct SpindleTestSpec {
 
 /// The channels a spindle run logs (added to a campaign that lacks them).
 std::vector<Channel> spindleTestChannels();
+
+/// Speed programme `index` (1, 2, …) as run SP<index>: SP1 is the default
+/// programme; the others step down, cycle, ramp, and (6 and beyond) draw
+/// random blocks, so that held-out runs test motion the training did not.
+SpindleTestSpec spindleTestProgramme(int index);
 
 /// Simulates the run; the campaign must already hold the spindleTestChannels().
 Run simulateSpindleTest(const SpindleTestSpec& spec, const std::vector<QString>& sampleColumns);

@@ -91,8 +91,8 @@ TEST(ModelCli, compareGivesTheCrossStateMatrixOfEveryModel) {
     EXPECT_EQ(cmp[QStringLiteral("diagonal")].toString(),
               QStringLiteral("training score (fitted and scored on the same run)"));
     const QJsonObject models = cmp[QStringLiteral("models")].toObject();
-    EXPECT_EQ(models.keys(),
-              QStringList({"exponential", "heat-transfer", "mlr", "poly-position", "sensorless"}));
+    EXPECT_EQ(models.keys(), QStringList({"arx", "exponential", "heat-transfer", "mlr",
+                                          "poly-position", "sensorless"}));
     for (const QString& name : models.keys()) {
         const QJsonArray m = models[name][QStringLiteral("rms_um")].toArray();
         ASSERT_EQ(m.size(), 3) << qPrintable(name);
@@ -127,6 +127,42 @@ TEST(ModelCli, driftChannelOfTheSpindleRunIsATarget) {
                           QStringLiteral("--json")});
     ASSERT_EQ(r.exitCode, 0) << r.err.constData();
     EXPECT_EQ(json(r)[QStringLiteral("train_runs")].toArray(), QJsonArray({"SP1"}));
+}
+
+TEST(ModelCli, autoChoosesOnTheTrainingRunsAndSaysWhat) {
+    QTemporaryDir dir;
+    const QString bundle = dir.filePath(QStringLiteral("spindle"));
+    ASSERT_EQ(runCli({QStringLiteral("simulate"), QStringLiteral("--out"), bundle,
+                      QStringLiteral("--runs"), QStringLiteral("S1"),
+                      QStringLiteral("--spindle-runs"), QStringLiteral("4")})
+                  .exitCode,
+              0);
+    CliResult r =
+        runCli({QStringLiteral("fit"), bundle, QStringLiteral("--model"), QStringLiteral("auto"),
+                QStringLiteral("--target"), QStringLiteral("D_z"), QStringLiteral("--train"),
+                QStringLiteral("SP1,SP2,SP3"), QStringLiteral("--test"), QStringLiteral("SP4"),
+                QStringLiteral("--json")});
+    ASSERT_EQ(r.exitCode, 0) << r.err.constData();
+    const QJsonObject o = json(r);
+    EXPECT_EQ(o[QStringLiteral("model")].toString(), QStringLiteral("auto"));
+    const QJsonObject fit = o[QStringLiteral("fit")].toObject();
+    const QString said = fit[QStringLiteral("notes")].toArray().first().toString();
+    EXPECT_TRUE(said.startsWith(QStringLiteral("auto chose arx"))) << qPrintable(said);
+    EXPECT_TRUE(said.contains(QStringLiteral("mlr "))) << "the families it turned down, scored";
+    // The lag of each chosen sensor is a parameter, and the held-out drift of
+    // tens of µm is followed to well under a micrometre.
+    bool hasLag = false;
+    for (const QString& key : o[QStringLiteral("parameters")].toObject().keys())
+        hasLag = hasLag || key.endsWith(QStringLiteral(".tau"));
+    EXPECT_TRUE(hasLag);
+    EXPECT_LT(o[QStringLiteral("test")].toObject()[QStringLiteral("rms_um")].toDouble(), 0.5);
+
+    CliResult text =
+        runCli({QStringLiteral("fit"), bundle, QStringLiteral("--model"), QStringLiteral("auto"),
+                QStringLiteral("--target"), QStringLiteral("D_z"), QStringLiteral("--train"),
+                QStringLiteral("SP1,SP2"), QStringLiteral("--test"), QStringLiteral("SP3,SP4")});
+    ASSERT_EQ(text.exitCode, 0) << text.err.constData();
+    EXPECT_TRUE(text.out.contains("auto chose")) << text.out.constData();
 }
 
 TEST(ModelCli, badRequestsAreRefusedWithTheReason) {

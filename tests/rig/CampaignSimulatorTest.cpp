@@ -63,7 +63,7 @@ int lastWarmupCycle(const driftlab::Run& run) {
 
 TEST(CampaignSimulator, fiveMovingStatesGiveThePublishedMagnitudesAndAValidBundle) {
     RigSpec spec;
-    spec.spindle_run = true;
+    spec.spindle_runs = 1;
     const Campaign campaign = simulateCampaign(spec);
     ASSERT_EQ(campaign.runs.size(), 6u);
 

@@ -94,5 +94,7 @@ TEST(SpindleTest, axialDriftGrowsWithSpeedAndRelaxesAtTheStops) {
     const double worst = *std::min_element(z.begin(), z.end());
     EXPECT_LT(worst, -15) << "tens of µm of axial drift at 9000 rpm";
     EXPECT_GT(worst, -80);
-    EXPECT_GT(at(t.back()), 0.5 * worst) << "an hour after the last stop most of it is gone";
+    // The shaft's share relaxes within the hour after the last stop; the column
+    // core (τ of hours) keeps the rest.
+    EXPECT_GT(at(t.back()), 0.7 * worst) << "an hour after the last stop a third is gone";
 }

@@ -42,7 +42,7 @@ FitOutcome runFit(const FitRequest& request, JobControl& control) {
     auto model = models::makeModel(request.model);
     if (!model) {
         out.error = QObject::tr("'%1' is not a model (%2)")
-                        .arg(request.model, models::modelNames().join(QStringLiteral(", ")));
+                        .arg(request.model, models::fitModelNames().join(QStringLiteral(", ")));
         return out;
     }
     if (request.train_runs.isEmpty()) {

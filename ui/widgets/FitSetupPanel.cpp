@@ -22,7 +22,7 @@ QStringList checked(const QListWidget* list) {
 
 FitSetupPanel::FitSetupPanel(QWidget* parent) : QWidget(parent) {
     m_model = new QComboBox(this);
-    for (const QString& name : models::modelNames()) {
+    for (const QString& name : models::fitModelNames()) {
         m_model->addItem(name, name);
         m_model->setItemData(m_model->count() - 1, models::makeModel(name)->describe(),
                              Qt::ToolTipRole);

@@ -1,0 +1,131 @@
+#include "core/models/AutoModel.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/models/CrossValidation.h"
+#include "core/models/ModelError.h"
+#include "core/models/ModelFactory.h"
+
+namespace driftlab::models {
+namespace {
+
+/// The families in order of simplicity: of two nearly as good, the simpler wins.
+const QStringList& familiesSimplestFirst() {
+    static const QStringList families{
+        QStringLiteral("mlr"),         QStringLiteral("poly-position"),
+        QStringLiteral("exponential"), QStringLiteral("sensorless"),
+        QStringLiteral("arx"),         QStringLiteral("heat-transfer")};
+    return families;
+}
+
+/// The run with its observations before (`early`) or after 70 % of its time.
+RunData timeSplit(const RunData& run, bool early) {
+    double first = run.observations.front().time_s, last = first;
+    for (const ErrorObservation& o : run.observations) {
+        first = std::min(first, o.time_s);
+        last = std::max(last, o.time_s);
+    }
+    const double cut = first + 0.7 * (last - first);
+    RunData part = run;
+    part.observations.clear();
+    for (const ErrorObservation& o : run.observations)
+        if ((o.time_s <= cut) == early) part.observations.push_back(o);
+    return part;
+}
+
+}  // namespace
+
+QString AutoModel::describe() const {
+    return QStringLiteral(
+        "Chooses the model family and its inputs by cross-validation over the training runs "
+        "only (leave one run out), refits the choice on all of them and reports every "
+        "family's score.");
+}
+
+double AutoModel::crossValidatedRms(const QString& family,
+                                    const std::vector<RunData>& training) const {
+    // Folds: each run held out in turn, or a single run's last 30 % of time.
+    std::vector<std::pair<std::vector<RunData>, RunData>> folds;
+    if (training.size() > 1) {
+        for (std::size_t r = 0; r < training.size(); ++r) {
+            std::vector<RunData> rest;
+            for (std::size_t k = 0; k < training.size(); ++k)
+                if (k != r) rest.push_back(training[k]);
+            folds.emplace_back(std::move(rest), training[r]);
+        }
+    } else {
+        folds.emplace_back(std::vector<RunData>{timeSplit(training.front(), true)},
+                           timeSplit(training.front(), false));
+    }
+    double squares = 0;
+    std::size_t count = 0;
+    for (const auto& [fitOn, heldOut] : folds) {
+        if (cancelRequested()) throw ModelError(QStringLiteral("model 'auto': fit cancelled"));
+        const std::unique_ptr<ThermalErrorModel> model = makeModel(family);
+        model->setCancelCheck([this] { return cancelRequested(); });
+        const FitSummary fit = model->fit(fitOn);
+        if (!fit.success) throw ModelError(fit.message);
+        const Prediction p = model->predict(heldOut);
+        if (!p.ok()) throw ModelError(p.error);
+        const Eigen::VectorXd measured = heldOut.observedErrors();
+        for (Eigen::Index i = 0; i < measured.size(); ++i)
+            squares += std::pow(measured[i] - p.error_um[std::size_t(i)], 2);
+        count += std::size_t(measured.size());
+    }
+    if (count == 0) throw ModelError(QStringLiteral("no observation to score on"));
+    return std::sqrt(squares / double(count));
+}
+
+FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
+    chosen_.reset();
+    std::vector<double> scores;
+    QStringList scored, failed;
+    for (const QString& family : familiesSimplestFirst()) {
+        try {
+            scores.push_back(crossValidatedRms(family, training));
+            scored << QStringLiteral("%1 %2 µm").arg(family).arg(scores.back(), 0, 'g', 3);
+        } catch (const ModelError& e) {
+            if (cancelRequested()) throw;
+            scores.push_back(std::numeric_limits<double>::infinity());
+            failed << QStringLiteral("%1 (%2)").arg(family, e.message);
+        }
+    }
+    const std::size_t pick = simplestNearBest(scores);
+    if (pick == scores.size())
+        throw ModelError(QStringLiteral("model 'auto': no model family can be fitted and "
+                                        "cross-validated on these runs: %1")
+                             .arg(failed.join(QStringLiteral("; "))));
+    const QString family = familiesSimplestFirst()[qsizetype(pick)];
+    chosen_ = makeModel(family);
+    chosen_->setCancelCheck([this] { return cancelRequested(); });
+    FitSummary summary = chosen_->fit(training);
+    if (!summary.success) throw ModelError(summary.message);
+
+    for (std::size_t k = 0; k < scores.size(); ++k)
+        if (std::isfinite(scores[k]))
+            summary.metrics[QStringLiteral("auto_cv_rms_um.") +
+                            familiesSimplestFirst()[qsizetype(k)]] = scores[k];
+    const QString how = training.size() > 1
+                            ? QStringLiteral("leaving each training run out in turn")
+                            : QStringLiteral("fitting the run's first 70 % and scoring the rest");
+    QStringList notes{QStringLiteral("auto chose %1 by cross-validation over the training runs "
+                                     "(%2): %3")
+                          .arg(family, how, scored.join(QStringLiteral(", ")))};
+    if (!failed.isEmpty())
+        notes << QStringLiteral("auto could not try: %1").arg(failed.join(QStringLiteral("; ")));
+    summary.notes = notes + summary.notes;
+    summary.message = QStringLiteral("model 'auto' chose '%1' and fitted it on %2 run(s)")
+                          .arg(family)
+                          .arg(training.size());
+    return summary;
+}
+
+Eigen::VectorXd AutoModel::predictRun(const RunData& run,
+                                      const std::vector<PredictionPoint>& at) const {
+    const Prediction p = chosen_->predict(run, at);
+    if (!p.ok()) throw ModelError(p.error);
+    return Eigen::Map<const Eigen::VectorXd>(p.error_um.data(), Eigen::Index(p.error_um.size()));
+}
+
+}  // namespace driftlab::models
