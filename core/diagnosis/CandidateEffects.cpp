@@ -174,6 +174,22 @@ std::vector<CandidateEffect> candidateEffects(
                     for (double& v : y) v += offset;
                 }));
         }
+    // The room sensor is read as a temperature, not only as a rise: the screw
+    // starts at the room temperature it soaked in, so a room sensor reading δ
+    // high makes every screw sensor look δ low against the model, and the fit
+    // bends its heat parameters to follow. Its gain is on the positioning
+    // error the bent fit gets wrong. (Offsets on the air and structure
+    // sensors cancel in their rises; InvisibleOffsets shows it.)
+    if (const auto* room = runs.empty() ? nullptr : firstOfRole(runs.front(), ChannelRole::Ambient))
+        candidates.push_back(
+            {QStringLiteral("sensor_offset:") + room->channel_id,
+             {},
+             {{QStringLiteral("offset"), QStringLiteral("K"), 0, -10, 10}},
+             {},
+             [](const double* v, const ScrewRunInputs&, const auto&, ScrewRunOutputs& out) {
+                 for (auto& sensor : out.sensor_C)
+                     for (double& t : sensor) t -= v[0];
+             }});
     if (allRunsHave(runs, ChannelRole::Air))
         candidates.push_back(
             {QStringLiteral("air_refraction"),

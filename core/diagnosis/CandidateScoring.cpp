@@ -57,6 +57,14 @@ QString effectWords(const Finding& f) {
                    "while the screw warms and high while it cools")
             .arg(f.effect.channel)
             .arg(v, 0, 'f', 0);
+    if (base == QLatin1String("sensor_offset") && f.effect.channel.isEmpty())
+        return QStringLiteral(
+                   "room sensor %1 reads %2 K %3 throughout: the screw started at the true room "
+                   "temperature, so against the model every screw sensor looks %2 K %4")
+            .arg(f.cause.section(QLatin1Char(':'), 1))
+            .arg(std::abs(v), 0, 'f', 2)
+            .arg(v > 0 ? QStringLiteral("high") : QStringLiteral("low"))
+            .arg(v > 0 ? QStringLiteral("low") : QStringLiteral("high"));
     if (base == QLatin1String("sensor_offset"))
         return QStringLiteral("sensor %1 reads %2 K %3 throughout")
             .arg(f.effect.channel)

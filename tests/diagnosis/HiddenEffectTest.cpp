@@ -14,6 +14,7 @@
 #include "core/diagnosis/Diagnosis.h"
 #include "core/rig/CampaignSimulator.h"
 #include "tests/diagnosis/FindingsText.h"
+#include "tests/diagnosis/SuiteStates.h"
 
 using namespace driftlab;
 
@@ -56,7 +57,8 @@ QString resolveChannel(const QString& effect, const rig::RigChannelNames& n) {
     if (role.isEmpty()) return effect;
     const std::map<QString, QString> byRole{{QStringLiteral("nut"), n.nut},
                                             {QStringLiteral("bearing_fixed"), n.bearing_fixed},
-                                            {QStringLiteral("bearing_free"), n.bearing_free}};
+                                            {QStringLiteral("bearing_free"), n.bearing_free},
+                                            {QStringLiteral("ambient"), n.ambient}};
     QString resolved = effect;
     return resolved.replace(QLatin1Char(':') + role + QLatin1Char('='),
                             QLatin1Char(':') + byRole.at(role) + QLatin1Char('='));
@@ -75,12 +77,7 @@ rig::RigSpec specFor(const HiddenEffectCase& c) {
     spec.screw.diameter_m = c.diameter_mm * 1e-3;
     spec.screw.lead_m = c.lead_mm * 1e-3;
     spec.names = channelNames(c.names);
-    std::vector<rig::MovingStateRun> runs;
-    for (const auto& r : rig::defaultMovingStates())
-        if (r.id == QLatin1String("S1") || r.id == QLatin1String("S3") ||
-            r.id == QLatin1String("S5"))
-            runs.push_back(r);
-    spec.runs = runs;
+    spec.runs = test::suiteStates();
     return spec;
 }
 
@@ -203,6 +200,13 @@ std::vector<HiddenEffectCase> cases() {
          50,
          16,
          2},
+        {"sensor_offset room 0.4 K",
+         "sensor_offset:",
+         {"sensor_offset:ambient=0.4"},
+         30,
+         40,
+         10,
+         1},
         {"air_refraction 2", "air_refraction", {"air_refraction=2"}, 17, 50, 16, 1},
         {"air_refraction 1", "air_refraction", {"air_refraction=1"}, 18, 32, 10, 2},
         {"air_refraction 0.8", "air_refraction", {"air_refraction=0.8"}, 19},
