@@ -203,7 +203,12 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
                            "grid of 2 or more points with 0 < min < max"));
     FitSummary summary;
     QStringList candidates;
+    const QStringList unlogged = unloggedChannels(training);
+    if (!unlogged.isEmpty())
+        summary.notes << QStringLiteral("not logged in the training runs: %1")
+                             .arg(unlogged.join(QStringLiteral(", ")));
     for (const TemperatureRise& channel : training.front().temperatures) {
+        if (unlogged.contains(channel.channel_id)) continue;
         try {
             for (const RunData& run : training) {
                 const std::vector<PredictionPoint> at = run.observationPoints();

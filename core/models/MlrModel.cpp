@@ -72,8 +72,12 @@ FitSummary MlrModel::fitRuns(const std::vector<RunData>& training) {
     });
     QStringList candidates;
     std::vector<Eigen::VectorXd> columns;
+    const QStringList unlogged = unloggedChannels(training);
+    if (!unlogged.isEmpty())
+        summary.notes << QStringLiteral("not logged in the training runs: %1")
+                             .arg(unlogged.join(QStringLiteral(", ")));
     for (const TemperatureRise& channel : training.front().temperatures) {
-        if (channel.role == ChannelRole::Ambient) continue;
+        if (channel.role == ChannelRole::Ambient || unlogged.contains(channel.channel_id)) continue;
         try {
             columns.push_back(stackRows(training, [&](const RunData& run) {
                 return inputsAt(run, {channel.channel_id}, run.observationPoints());

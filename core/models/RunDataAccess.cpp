@@ -84,6 +84,14 @@ Eigen::MatrixXd risesAt(const RunData& run, const QStringList& channelIds,
     return rises;
 }
 
+QStringList unloggedChannels(const std::vector<RunData>& runs) {
+    QStringList unlogged;
+    for (const RunData& run : runs)
+        for (const TemperatureRise& t : run.temperatures)
+            if (t.rise_K.empty() && !unlogged.contains(t.channel_id)) unlogged << t.channel_id;
+    return unlogged;
+}
+
 const TemperatureRise& channelForRole(const RunData& run, ChannelRole role, const QString& model) {
     const TemperatureRise* best = nullptr;
     auto distance = [&](const TemperatureRise& t) {

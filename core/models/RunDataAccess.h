@@ -28,6 +28,11 @@ void requireCoverage(const RunData& run, const Signal& signal, double until_s);
 Eigen::MatrixXd risesAt(const RunData& run, const QStringList& channelIds,
                         const std::vector<PredictionPoint>& at);
 
+/// Temperature channels without a single sample in some of the runs (a spindle
+/// campaign's feed-axis sensors, say): no candidate for a regression, and
+/// named in one note rather than one per channel.
+QStringList unloggedChannels(const std::vector<RunData>& runs);
+
 /// The channel of a role for a model that needs it: of several, the one nearest
 /// the screw's fixed end by declared position, else the first declared.
 const TemperatureRise& channelForRole(const RunData& run, ChannelRole role, const QString& model);
