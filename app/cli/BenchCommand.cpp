@@ -33,6 +33,9 @@ void printPlotLine(const QJsonObject& figures);
 /// ReportBench.cpp: the acceptance report's data and PDF drawing, ms.
 QJsonObject reportFigures(int repetitions);
 void printReportLine(const QJsonObject& figures);
+/// ModelChoiceBench.cpp: `fit --model auto` and `arx` on spindle runs' drift, ms.
+QJsonObject modelChoiceFigures(int repetitions);
+void printModelChoiceLine(const QJsonObject& figures);
 /// BatchThroughput.cpp: `batch` of `campaigns` simulated campaigns, -j1 and -j2.
 QJsonObject batchFigures(int campaigns, int repetitions);
 void printBatchLine(const QJsonObject& figures);
@@ -170,7 +173,7 @@ int benchCommand(const QStringList& args) {
     const QCommandLineOption only{
         QStringLiteral("only"),
         QStringLiteral("Measure only this figure: push, online, logging, live-read, plot, "
-                       "diagnosis, report, batch."),
+                       "diagnosis, report, batch, model-choice."),
         QStringLiteral("FIGURE")};
     const QCommandLineOption server{
         QStringLiteral("db"),
@@ -243,6 +246,16 @@ int benchCommand(const QStringList& args) {
             printReportLine(figures);
         return 0;
     }
+    if (parser.value(only) == QLatin1String("model-choice")) {
+        const QJsonObject figures = modelChoiceFigures(
+            parser.isSet(repeat) ? std::max(1, parser.value(repeat).toInt()) : 3);
+        endProgressLine();
+        if (parser.isSet(QStringLiteral("json")))
+            printJson(figures);
+        else
+            printModelChoiceLine(figures);
+        return 0;
+    }
     if (parser.value(only) == QLatin1String("batch")) {
         // Six campaigns: three rounds of two at a time, so -j2 is not flattered by a lone last
         // item.
@@ -274,7 +287,7 @@ int benchCommand(const QStringList& args) {
     if (parser.isSet(only))
         throw CliError(QStringLiteral("--only: '%1' is not a figure it can measure alone (push, "
                                       "online, logging, live-read, plot, report, batch, "
-                                      "diagnosis)")
+                                      "diagnosis, model-choice)")
                            .arg(parser.value(only)),
                        2);
     const int repetitions = std::max(1, parser.value(repeat).toInt());
