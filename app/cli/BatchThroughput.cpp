@@ -29,11 +29,6 @@ void runSelf(const QStringList& args, int expected = 0) {
                                                    .constLast()));
 }
 
-double medianOf(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
 }  // namespace
 
 QJsonObject batchFigures(int campaigns, int repetitions) {
@@ -59,7 +54,7 @@ QJsonObject batchFigures(int campaigns, int repetitions) {
             printProgress(QStringLiteral("batch -j%1").arg(jobs), (k + 1.0) / repetitions);
         }
         figures[QStringLiteral("batch_j%1_campaigns_per_min").arg(jobs)] =
-            campaigns / medianOf(minutes);
+            campaigns / median(minutes);
     }
     return figures;
 }

@@ -45,11 +45,6 @@ namespace {
 /// Readings the live-read latency figure is the median and p99 of.
 constexpr int kLiveReadings = 25000;
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
 /// Heat-transfer identification on the five-run rig campaign: seconds, iterations, cost.
 QJsonObject identificationFigures(int repetitions) {
     const Campaign campaign = rig::simulateCampaign(rig::RigSpec{});

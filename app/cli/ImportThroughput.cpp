@@ -136,11 +136,6 @@ ChildRun runSelf(const QStringList& args) {
     return run;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
 }  // namespace
 
 QJsonObject importFigures(int megabytes, int repetitions) {

@@ -115,11 +115,6 @@ double uploadSeconds(const QString& path, const QString& serverUrl) {
     return timer.nsecsElapsed() * 1e-9;
 }
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
-
 }  // namespace
 
 QJsonObject loggingFigures(int repetitions, const QString& serverUrl) {

@@ -14,11 +14,6 @@
 namespace driftlab::cli {
 namespace {
 
-double medianMs(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
 /// Fit time, ms; throws CliError when the fit fails.
 double fitMs(models::ThermalErrorModel& model, const std::vector<models::RunData>& runs) {
     QElapsedTimer timer;
@@ -51,8 +46,8 @@ QJsonObject modelChoiceFigures(int repetitions) {
         arxMs.push_back(fitMs(arx, data.runs));
         printProgress(QStringLiteral("model choice"), (i + 1.0) / repetitions);
     }
-    return {{QStringLiteral("auto_fit_ms"), medianMs(autoMs)},
-            {QStringLiteral("arx_fit_ms"), medianMs(arxMs)},
+    return {{QStringLiteral("auto_fit_ms"), median(autoMs)},
+            {QStringLiteral("arx_fit_ms"), median(arxMs)},
             {QStringLiteral("auto_chose"), chosen}};
 }
 

@@ -26,11 +26,6 @@ namespace {
 constexpr int kChannels = 64;
 constexpr std::int64_t kRows = 8 * 3600 * 10;  // 8 h at 10 Hz
 
-double medianOf(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
-
 double plotRedrawMs(int repetitions) {
     QStringList columns;
     for (int c = 0; c < kChannels; ++c) columns << QStringLiteral("T%1").arg(c + 1);
@@ -60,7 +55,7 @@ double plotRedrawMs(int repetitions) {
         ms.push_back(timer.nsecsElapsed() / 1e6);
     }
     printProgress(QStringLiteral("plot redraw"), 1);
-    return medianOf(ms);
+    return median(ms);
 }
 
 double guiStallMaxMs(double run_s) {
@@ -112,7 +107,7 @@ QJsonObject plotFigures(int repetitions) {
         stalls.push_back(guiStallMaxMs(4.0));
     }
     printProgress(QStringLiteral("gui stall"), 1);
-    figures[QStringLiteral("gui_stall_max_ms")] = medianOf(stalls);
+    figures[QStringLiteral("gui_stall_max_ms")] = median(stalls);
     return figures;
 }
 

@@ -12,15 +12,6 @@
 #include "ui/report/ReportPdf.h"
 
 namespace driftlab::cli {
-namespace {
-
-double medianMs(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
-}  // namespace
-
 QJsonObject reportFigures(int repetitions) {
     const Campaign campaign = rig::simulateCampaign(rig::RigSpec{});
     report::ReportOptions options;
@@ -51,8 +42,8 @@ QJsonObject reportFigures(int repetitions) {
         pages = r.pages;
         printProgress(QStringLiteral("report"), (repetitions + i + 1.0) / steps);
     }
-    return {{QStringLiteral("report_data_ms"), medianMs(dataMs)},
-            {QStringLiteral("report_render_ms"), medianMs(renderMs)},
+    return {{QStringLiteral("report_data_ms"), median(dataMs)},
+            {QStringLiteral("report_render_ms"), median(renderMs)},
             {QStringLiteral("report_pages"), pages}};
 }
 
