@@ -66,10 +66,6 @@ QJsonObject diagnosisJson(const diagnosis::DiagnosisResult& r) {
     return json;
 }
 
-const diagnosis::Finding* verdictFinding(const diagnosis::DiagnosisResult& r) {
-    return r.causes.isEmpty() ? nullptr : diagnosis::adoptedFinding(r, r.causes.back());
-}
-
 ModelFitRecord adoptedExtensionFit(const diagnosis::DiagnosisResult& r,
                                    const diagnosis::Finding& f) {
     return {

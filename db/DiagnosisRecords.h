@@ -23,10 +23,6 @@ QJsonObject findingJson(const diagnosis::Finding& finding);
 /// order, verdict (and its evidence), what remains.
 QJsonObject diagnosisJson(const diagnosis::DiagnosisResult& result);
 
-/// The finding whose model is the adopted extension with every cause found
-/// (the last cause's), or nullptr (verdict none/unexplained).
-const diagnosis::Finding* verdictFinding(const diagnosis::DiagnosisResult& result);
-
 /// The model fit an adopted extension is kept as: "heat-transfer+CAUSE" on the
 /// diagnosis's runs, its parameters, its held-out gain as metrics.
 ModelFitRecord adoptedExtensionFit(const diagnosis::DiagnosisResult& result,

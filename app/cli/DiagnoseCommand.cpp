@@ -29,7 +29,7 @@ QJsonArray writePlots(const Campaign& campaign, const diagnosis::DiagnosisResult
                 QStringLiteral("%1: positioning residual of the base model").arg(run), &error))
             throw CliError(error);
         const QString curves = dir.filePath(run + QStringLiteral("-before-after.png"));
-        const auto* adopted = r.adopted_residuals.empty() ? nullptr : &r.adopted_residuals[k];
+        const auto* adopted = diagnosis::adoptedResiduals(r, k);
         if (!ui::saveBeforeAfter(data.runs[k], r.base_residuals[k], adopted,
                                  QStringLiteral("with ") + r.verdict, curves,
                                  QStringLiteral("%1: verdict %2").arg(run, r.verdict), &error))
@@ -80,7 +80,7 @@ int diagnoseCommand(const QStringList& args) {
     if (parser.isSet(QStringLiteral("db"))) {
         // The adopted extension is kept as a model fit, the diagnosis with it.
         std::optional<qint64> adopted;
-        if (const diagnosis::Finding* f = db::verdictFinding(r))
+        if (const diagnosis::Finding* f = diagnosis::verdictFinding(r))
             adopted = storeFitIfFromDatabase(parser, db::adoptedExtensionFit(r, *f));
         auto store = openSourceStore(parser, db::StoreAccess::ReadWrite);
         QString error;

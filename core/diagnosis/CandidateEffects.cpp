@@ -1,5 +1,6 @@
 #include "core/diagnosis/CandidateEffects.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -46,12 +47,6 @@ void addToErrors(ScrewRunOutputs& out, const std::vector<PredictionPoint>& at, c
                            models::valueAt(rise, at[j].time_s, in.max_gap_s, in.run_id);
 }
 
-const models::TemperatureRise* firstOfRole(const models::RunData& run, ChannelRole role) {
-    for (const auto& t : run.temperatures)
-        if (t.role == role && t.unusable.isEmpty()) return &t;
-    return nullptr;
-}
-
 /// Starting value of a lag: of a few time constants from none to four hours,
 /// the one whose lagged structure rise best explains (least squares, one gain)
 /// what the base model leaves on the training runs. The Ceres fit then refines
@@ -63,7 +58,7 @@ double structureLagStart_s(const std::vector<models::RunData>& runs,
     for (const double tau : {0.0, 600.0, 1800.0, 3600.0, 7200.0, 14400.0}) {
         double xy = 0, xx = 0, yy = 0;
         for (std::size_t k = 0; k < runs.size() && k < residuals.size(); ++k) {
-            const auto* structure = firstOfRole(runs[k], ChannelRole::Structure);
+            const auto* structure = models::firstUsableOfRole(runs[k], ChannelRole::Structure);
             if (!structure) continue;
             const Signal rise = lagged(structure->rise_K, tau);
             const auto& r = residuals[k];
@@ -119,7 +114,7 @@ bool severalSpeeds(const std::vector<models::RunData>& runs) {
 
 bool allRunsHave(const std::vector<models::RunData>& runs, ChannelRole role) {
     for (const auto& r : runs)
-        if (!firstOfRole(r, role)) return false;
+        if (!models::firstUsableOfRole(r, role)) return false;
     return !runs.empty();
 }
 
@@ -180,9 +175,15 @@ std::vector<CandidateEffect> candidateEffects(
     // bends its heat parameters to follow. Its gain is on the positioning
     // error the bent fit gets wrong. (Offsets on the air and structure
     // sensors cancel in their rises; InvisibleOffsets shows it.)
-    if (const auto* room = runs.empty() ? nullptr : firstOfRole(runs.front(), ChannelRole::Ambient))
+    // The room channel is the one the screw model reads (channelForRole).
+    if (!runs.empty() &&
+        std::any_of(runs.front().temperatures.begin(), runs.front().temperatures.end(),
+                    [](const auto& t) { return t.role == ChannelRole::Ambient; }))
         candidates.push_back(
-            {QStringLiteral("sensor_offset:") + room->channel_id,
+            {QStringLiteral("sensor_offset:") +
+                 models::channelForRole(runs.front(), ChannelRole::Ambient,
+                                        QStringLiteral("heat-transfer"))
+                     .channel_id,
              {},
              {{QStringLiteral("offset"), QStringLiteral("K"), 0, -10, 10}},
              {},

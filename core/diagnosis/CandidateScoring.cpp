@@ -86,15 +86,19 @@ QString effectWords(const Finding& f) {
 
 }  // namespace
 
-StepBase makeStepBase(std::vector<CandidateEffect> effects,
-                      std::shared_ptr<const models::HeatTransferModel> model,
-                      const std::vector<models::RunData>& train,
-                      const std::vector<models::RunData>& test) {
-    StepBase b{std::move(effects), std::move(model), {}, {}, {}};
+StepBase baseStep(std::shared_ptr<const models::HeatTransferModel> base,
+                  const std::vector<models::RunData>& train,
+                  const std::vector<models::RunData>& test) {
+    StepBase b{{}, std::move(base), {}, {}, {}};
     b.train = residualsOf(*b.model, train);
     b.test = residualsOf(*b.model, test);
     b.test_summary = summarise(b.test, test);
     return b;
+}
+
+StepBase adoptedStepBase(std::vector<CandidateEffect> effects, const Finding& adopted) {
+    return {std::move(effects), adopted.model, adopted.train_residuals, adopted.test_residuals,
+            adopted.test_after};
 }
 
 std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffect& candidate,
@@ -117,11 +121,12 @@ std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffec
         f.parameters.emplace_back(p.name, f.fit.parameters.at(p.name));
     f.model = model;
 
-    const auto train = residualsOf(*model, data.train);
-    const auto test = residualsOf(*model, data.test);
+    f.train_residuals = residualsOf(*model, data.train);
+    f.test_residuals = residualsOf(*model, data.test);
+    const auto& train = f.train_residuals;
+    const auto& test = f.test_residuals;
     f.test_before = base.test_summary;
     f.test_after = summarise(test, data.test);
-    f.test_residuals = test;
     const QString& channel = candidate.channel;
     f.gain.quantity = channel.isEmpty() ? QStringLiteral("positioning")
                                         : QStringLiteral("temperature:") + channel;

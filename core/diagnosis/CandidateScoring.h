@@ -19,10 +19,14 @@ struct StepBase {
     ResidualSummary test_summary;
 };
 
-StepBase makeStepBase(std::vector<CandidateEffect> effects,
-                      std::shared_ptr<const models::HeatTransferModel> model,
-                      const std::vector<models::RunData>& train,
-                      const std::vector<models::RunData>& test);
+/// The first step: the fitted base model and what it leaves.
+StepBase baseStep(std::shared_ptr<const models::HeatTransferModel> base,
+                  const std::vector<models::RunData>& train,
+                  const std::vector<models::RunData>& test);
+
+/// The step that starts from an adopted finding: its fitted extension (the
+/// causes `effects`, in order) and the residuals it was scored by.
+StepBase adoptedStepBase(std::vector<CandidateEffect> effects, const Finding& adopted);
 
 /// The runs a step fits on and scores on, and how it is judged.
 struct StepData {

@@ -122,6 +122,15 @@ const Finding* adoptedFinding(const DiagnosisResult& r, const QString& cause) {
     return nullptr;
 }
 
+const Finding* verdictFinding(const DiagnosisResult& r) {
+    return r.causes.isEmpty() ? nullptr : adoptedFinding(r, r.causes.back());
+}
+
+const models::ReadingResiduals* adoptedResiduals(const DiagnosisResult& r, std::size_t k) {
+    const Finding* f = verdictFinding(r);
+    return f && k < f->test_residuals.size() ? &f->test_residuals[k] : nullptr;
+}
+
 QString parametersText(const Finding& f) {
     QStringList parts;
     for (const auto& [name, p] : f.parameters)
@@ -200,7 +209,7 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
     }
     try {
         const StepData data{train.runs, test.runs, result.test_runs, options, cancelled};
-        const StepBase step1 = makeStepBase({}, base, train.runs, test.runs);
+        const StepBase step1 = baseStep(base, train.runs, test.runs);
         result.base_residuals = step1.test;
         result.base_test = step1.test_summary;
 
@@ -215,7 +224,7 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
         std::optional<StepBase> adopted;
         if (first) {
             causes << first->cause;
-            adopted = makeStepBase({first->effect}, first->model, train.runs, test.runs);
+            adopted = adoptedStepBase({first->effect}, *first);
             // Step 2: what else helped on the held-out runs in step 1 (another
             // effect may show only once the first is accounted for), tested
             // again on what the cause leaves, from its own step-1 values.
@@ -232,8 +241,7 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
                 const Finding* next = bestSignificant(second, adopted->test);
                 if (next && next->gain.reduction >= options.min_second_gain) {
                     causes << next->cause;
-                    adopted = makeStepBase({first->effect, next->effect}, next->model, train.runs,
-                                           test.runs);
+                    adopted = adoptedStepBase({first->effect, next->effect}, *next);
                 }
                 result.findings.insert(result.findings.end(), second.begin(), second.end());
                 for (const auto& f : result.findings)  // the insert moved it
@@ -254,7 +262,6 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
         if (named) {
             result.verdict = causes.front();
             result.causes = causes;
-            result.adopted_residuals = adopted->test;
             if (!adopted->test_summary.atNoiseLevel())
                 result.remaining =
                     QStringLiteral(

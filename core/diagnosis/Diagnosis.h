@@ -62,7 +62,8 @@ struct Finding {
     Gain gain;
     /// Both quantities on the held-out runs before (the step's base) and after.
     ResidualSummary test_before, test_after;
-    std::vector<models::ReadingResiduals> test_residuals;  ///< what the extension leaves
+    /// What the extension leaves on the training and the held-out runs.
+    std::vector<models::ReadingResiduals> train_residuals, test_residuals;
     models::FitSummary fit;
     std::shared_ptr<const models::HeatTransferModel> model;  ///< the fitted extension
 };
@@ -83,12 +84,18 @@ struct DiagnosisResult {
     QString remaining;
     /// The base residuals on the test runs (for the residual map).
     std::vector<models::ReadingResiduals> base_residuals;
-    /// The adopted extension's residuals on the test runs (empty without a cause).
-    std::vector<models::ReadingResiduals> adopted_residuals;
 };
 
 /// The finding of an adopted cause (the step it was adopted in), or nullptr.
 const Finding* adoptedFinding(const DiagnosisResult& result, const QString& cause);
+
+/// The finding whose model is the adopted extension with every cause found
+/// (the last cause's, fitted on top of the ones before), or nullptr (verdict
+/// none/unexplained).
+const Finding* verdictFinding(const DiagnosisResult& result);
+
+/// What that extension leaves on held-out run `k`, or nullptr without a cause.
+const models::ReadingResiduals* adoptedResiduals(const DiagnosisResult& result, std::size_t k);
 
 /// "dh_800rpm = 3.1 ± 0.2 W/(m²·K), m = 1.4 ± 0.1".
 QString parametersText(const Finding& finding);

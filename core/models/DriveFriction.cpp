@@ -6,7 +6,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/models/HeatSourceInputs.h"
 #include "core/models/ModelError.h"
 #include "core/models/RunDataAccess.h"
 
@@ -105,9 +104,8 @@ double fitInertiaTerm(const std::vector<RunData>& runs) {
     return std::isfinite(b(3)) ? std::max(0.0, b(3)) : 0.0;
 }
 
-PiecewiseInput frictionPower(const RunData& run, double until_s, double inertiaTerm,
-                             const QString& model) {
-    const PiecewiseInput speed = screwSpeedFromFeed(run, until_s, model);
+PiecewiseInput frictionPower(const RunData& run, const PiecewiseInput& screwSpeed, double until_s,
+                             double inertiaTerm, const QString& model) {
     if (run.torque_Nm.empty())
         throw ModelError(QStringLiteral("model '%1' needs the motor torque: run '%2' has no "
                                         "samples in %3")
@@ -115,7 +113,7 @@ PiecewiseInput frictionPower(const RunData& run, double until_s, double inertiaT
     requireCoverage(run, run.torque_Nm, until_s);
     const auto profile = inertiaTerm > 0 ? speedProfile(run) : std::vector<SpeedStep>{};
     if (profile.empty()) {
-        PiecewiseInput power = speed;
+        PiecewiseInput power = screwSpeed;
         for (std::size_t i = 0; i < power.time_s.size(); ++i)
             power.value[i] *=
                 std::abs(valueAt(run.torque_Nm, power.time_s[i], run.max_gap_s, run.run_id));

@@ -26,9 +26,11 @@ namespace driftlab::models {
 double fitInertiaTerm(const std::vector<RunData>& runs);
 
 /// Friction power |τ_friction·ω|, W, each torque sample's value held over the
-/// interval it stands for; with `inertiaTerm` 0 the logged torque as it is.
-/// Throws ModelError naming `model` and the run when torque or feed is missing.
-PiecewiseInput frictionPower(const RunData& run, double until_s, double inertiaTerm,
-                             const QString& model);
+/// interval it stands for, with ω from the motion programme; with
+/// `inertiaTerm` 0 or no programme, the logged torque as it is times
+/// `screwSpeed` (the held feed, screwSpeedFromFeed). Throws ModelError naming
+/// `model` and the run when the torque is missing.
+PiecewiseInput frictionPower(const RunData& run, const PiecewiseInput& screwSpeed, double until_s,
+                             double inertiaTerm, const QString& model);
 
 }  // namespace driftlab::models

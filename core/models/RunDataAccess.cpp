@@ -92,6 +92,12 @@ QStringList unloggedChannels(const std::vector<RunData>& runs) {
     return unlogged;
 }
 
+const TemperatureRise* firstUsableOfRole(const RunData& run, ChannelRole role) {
+    for (const TemperatureRise& t : run.temperatures)
+        if (t.role == role && t.unusable.isEmpty()) return &t;
+    return nullptr;
+}
+
 const TemperatureRise& channelForRole(const RunData& run, ChannelRole role, const QString& model) {
     const TemperatureRise* best = nullptr;
     auto distance = [&](const TemperatureRise& t) {

@@ -33,6 +33,10 @@ Eigen::MatrixXd risesAt(const RunData& run, const QStringList& channelIds,
 /// named in one note rather than one per channel.
 QStringList unloggedChannels(const std::vector<RunData>& runs);
 
+/// The first channel of a role the run can use (it has a rise), or nullptr: the
+/// air and structure channels the screw model's readings follow.
+const TemperatureRise* firstUsableOfRole(const RunData& run, ChannelRole role);
+
 /// The channel of a role for a model that needs it: of several, the one nearest
 /// the screw's fixed end by declared position, else the first declared.
 const TemperatureRise& channelForRole(const RunData& run, ChannelRole role, const QString& model);

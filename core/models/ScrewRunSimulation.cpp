@@ -79,12 +79,10 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
     in.initial_C = ambient.reference_C;
     in.max_gap_s = run.max_gap_s;
     if (run.interferometer) in.dead_path_mm = run.interferometer->dead_path_mm;
-    for (const TemperatureRise& t : run.temperatures) {
-        if (!t.unusable.isEmpty()) continue;
-        if (t.role == ChannelRole::Air && in.air_rise_K.empty()) in.air_rise_K = t.rise_K;
-        if (t.role == ChannelRole::Structure && in.structure_rise_K.empty())
-            in.structure_rise_K = t.rise_K;
-    }
+    if (const TemperatureRise* air = firstUsableOfRole(run, ChannelRole::Air))
+        in.air_rise_K = air->rise_K;
+    if (const TemperatureRise* structure = firstUsableOfRole(run, ChannelRole::Structure))
+        in.structure_rise_K = structure->rise_K;
     for (const TemperatureRise& t : run.temperatures) {
         const bool onScrew = t.role == ChannelRole::Nut ||
                              (t.role == ChannelRole::Bearing && t.position_mm.has_value());

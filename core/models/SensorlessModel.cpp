@@ -26,8 +26,9 @@ std::vector<PiecewiseInput> SensorlessModel::inputs(const RunData& run, double u
         throw ModelError(QStringLiteral("model 'sensorless' predicts the positioning error of a "
                                         "feed axis from its motor; it cannot predict channel '%1'")
                              .arg(run.target_channel));
-    return {frictionPower(run, until_s, inertia_term_, name()),
-            screwSpeedFromFeed(run, until_s, name())};
+    PiecewiseInput speed = screwSpeedFromFeed(run, until_s, name());
+    PiecewiseInput power = frictionPower(run, speed, until_s, inertia_term_, name());
+    return {std::move(power), std::move(speed)};
 }
 
 FitSummary SensorlessModel::fitRuns(const std::vector<RunData>& training) {

@@ -1,7 +1,10 @@
 #pragma once
-// Every candidate's figures in a diagnosis, one indented line each: printed by
-// the hidden-effect suites so that a wrong verdict shows why.
+// What the hidden-effect suites print: every candidate's figures in a
+// diagnosis, one indented line each (so that a wrong verdict shows why), and
+// the confusion matrix.
 #include <QString>
+#include <iostream>
+#include <map>
 
 #include "core/diagnosis/Diagnosis.h"
 
@@ -18,6 +21,19 @@ inline QString findingsText(const diagnosis::DiagnosisResult& r) {
                     .arg(f.bic_drop, 0, 'f', 0)
                     .arg(diagnosis::parametersText(f));
     return text;
+}
+
+/// Rows: the hidden cause(s); columns: each verdict given and how often.
+using ConfusionMatrix = std::map<QString, std::map<QString, int>>;
+
+inline void printConfusion(const char* title, const ConfusionMatrix& confusion, int rowWidth) {
+    std::cout << "\n" << title << " (rows: hidden, columns: verdict)\n";
+    for (const auto& [expected, verdicts] : confusion) {
+        std::cout << "  " << qPrintable(expected.leftJustified(rowWidth));
+        for (const auto& [verdict, n] : verdicts)
+            std::cout << "  " << qPrintable(verdict) << " ×" << n;
+        std::cout << "\n";
+    }
 }
 
 }  // namespace driftlab::test

@@ -257,7 +257,7 @@ TEST(HiddenEffects, diagnosisNamesTheHiddenCauseAndNothingOnCleanData) {
         if (second.valid()) outcomes[i + 1] = second.get();
     }
 
-    std::map<QString, std::map<QString, int>> confusion;  // expected cause → verdict → count
+    test::ConfusionMatrix confusion;
     int correct = 0;
     for (std::size_t i = 0; i < all.size(); ++i) {
         const Outcome& o = outcomes[i];
@@ -280,13 +280,7 @@ TEST(HiddenEffects, diagnosisNamesTheHiddenCauseAndNothingOnCleanData) {
                 << all[i].name << ": " << qPrintable(o.verdict);
         }
     }
-    std::cout << "\nconfusion matrix (rows: hidden, columns: verdict)\n";
-    for (const auto& [expected, verdicts] : confusion) {
-        std::cout << "  " << qPrintable(expected.leftJustified(20));
-        for (const auto& [verdict, n] : verdicts)
-            std::cout << "  " << qPrintable(verdict) << " ×" << n;
-        std::cout << "\n";
-    }
+    test::printConfusion("confusion matrix", confusion, 20);
     std::cout << "correct: " << correct << " of " << all.size() << "\n";
     // Reliability: of the named causes reported with confidence in a band,
     // the share that was right.

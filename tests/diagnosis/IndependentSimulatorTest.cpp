@@ -84,7 +84,7 @@ TEST(IndependentSimulator, diagnosisOnCampaignsItDidNotWrite) {
         outcomes[i] = diagnoseBundle(suite.filePath(cases[i].bundle));
         if (second.valid()) outcomes[i + 1] = second.get();
     }
-    std::map<QString, std::map<QString, int>> confusion;
+    test::ConfusionMatrix confusion;
     int correct = 0;
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const Outcome& o = outcomes[i];
@@ -109,13 +109,7 @@ TEST(IndependentSimulator, diagnosisOnCampaignsItDidNotWrite) {
                 << qPrintable(cases[i].bundle) << ": " << qPrintable(o.verdict);
         }
     }
-    std::cout << "\nconfusion matrix, independent simulator (rows: hidden, columns: verdict)\n";
-    for (const auto& [expected, verdicts] : confusion) {
-        std::cout << "  " << qPrintable(expected.leftJustified(36));
-        for (const auto& [verdict, n] : verdicts)
-            std::cout << "  " << qPrintable(verdict) << " ×" << n;
-        std::cout << "\n";
-    }
+    test::printConfusion("confusion matrix, independent simulator", confusion, 36);
     std::cout << "correct: " << correct << " of " << cases.size() << "\n";
     EXPECT_GE(double(correct), kIndependentFloor * double(cases.size()));
 }

@@ -190,7 +190,7 @@ void DiagnosisPage::show(const DiagnosisOutcome& outcome) {
     m_outcome = std::make_shared<const DiagnosisOutcome>(outcome);
     m_adoptedFinding.reset();
     const diagnosis::DiagnosisResult& r = m_outcome->result;
-    const diagnosis::Finding* named = db::verdictFinding(r);
+    const diagnosis::Finding* named = diagnosis::verdictFinding(r);
     m_verdict->setText(
         tr("<b>Verdict: %1</b> — trained on %2, held out %3. Base model on the held-out runs: "
            "%4 µm RMS (reading noise %5 µm).<br>%6")
@@ -232,9 +232,7 @@ void DiagnosisPage::drawPlots() {
     const auto& base = r.base_residuals[std::size_t(k)];
     m_map->showMap(
         residualMapPlot(base, tr("%1: positioning residual of the base model").arg(base.run_id)));
-    const auto* adopted = r.adopted_residuals.size() > std::size_t(k)
-                              ? &r.adopted_residuals[std::size_t(k)]
-                              : nullptr;
+    const auto* adopted = diagnosis::adoptedResiduals(r, std::size_t(k));
     m_curves->showCurves(beforeAfterPlot(m_outcome->test_runs[std::size_t(k)], base, adopted,
                                          tr("with %1").arg(r.verdict),
                                          tr("%1: verdict %2").arg(base.run_id, r.verdict)));

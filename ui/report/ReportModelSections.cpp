@@ -105,7 +105,7 @@ void addDiagnosis(ReportDocument& doc, const DiagnosisSection& s) {
                   {},
                   residualMapPlot(r.base_residuals[k], title)});
         if (k >= s.test_runs.size()) continue;
-        const auto* adopted = r.adopted_residuals.empty() ? nullptr : &r.adopted_residuals[k];
+        const auto* adopted = diagnosis::adoptedResiduals(r, k);
         const QString curves = QStringLiteral("%1: verdict %2").arg(run, r.verdict);
         doc.plot({QStringLiteral("diagnosis-before-after-") + run,
                   curves,
