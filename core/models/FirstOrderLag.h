@@ -1,6 +1,6 @@
 #pragma once
 // First-order lag of a piecewise-constant heat-source input: the thermal
-// response shape shared by the exponential and the sensorless models.
+// response shape of the exponential model and the arx model's lagged inputs.
 
 #include <Eigen/Core>
 #include <vector>

@@ -38,6 +38,14 @@ PiecewiseInput held(const Signal& signal, double scale) {
     return input;
 }
 
+/// Screw speed from the feed_mm_min samples, each held until the next sample.
+PiecewiseInput screwSpeedFromFeed(const RunData& run, double until_s, const QString& model) {
+    const double scale = screwRadPerSPerFeed(run, model);
+    requireSignal(run, run.feed_mm_min, model, QStringLiteral("the screw speed"));
+    requireCoverage(run, run.feed_mm_min, until_s);
+    return held(run.feed_mm_min, scale);
+}
+
 }  // namespace
 
 PiecewiseInput screwSpeed(const RunData& run, double until_s, const QString& model) {
@@ -62,13 +70,6 @@ PiecewiseInput screwSpeed(const RunData& run, double until_s, const QString& mod
         input.value.insert(input.value.end(), {speed, 0.0});
     }
     return input;
-}
-
-PiecewiseInput screwSpeedFromFeed(const RunData& run, double until_s, const QString& model) {
-    const double scale = screwRadPerSPerFeed(run, model);
-    requireSignal(run, run.feed_mm_min, model, QStringLiteral("the screw speed"));
-    requireCoverage(run, run.feed_mm_min, until_s);
-    return held(run.feed_mm_min, scale);
 }
 
 PiecewiseInput spindleSpeed(const RunData& run, double until_s, const QString& model) {

@@ -1,6 +1,6 @@
 #pragma once
 // The heat-source activities that drive the lag models, as piecewise-constant
-// inputs over a run: screw speed, spindle speed (friction power: DriveFriction.h).
+// inputs over a run: screw speed, spindle speed.
 
 #include <QString>
 
@@ -15,9 +15,6 @@ namespace driftlab::models {
 /// Screw speed |ω| = 2π·|feed|/(60·lead), rad/s: from the motion segments when
 /// the run has them (exact timing, dwells at zero), else from the feed samples.
 PiecewiseInput screwSpeed(const RunData& run, double until_s, const QString& model);
-
-/// Screw speed from the feed_mm_min samples, each held until the next sample.
-PiecewiseInput screwSpeedFromFeed(const RunData& run, double until_s, const QString& model);
 
 /// Spindle speed, rad/s, from the campaign's speed channel.
 PiecewiseInput spindleSpeed(const RunData& run, double until_s, const QString& model);

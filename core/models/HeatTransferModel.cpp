@@ -90,7 +90,7 @@ physics::ScrewThermalParameters HeatTransferModel::parametersWith(const double* 
 std::optional<physics::ScrewThermalParameters> HeatTransferModel::fittedScrew(const RunData& run,
                                                                               QString* why) const {
     const QString problem =
-        !isFitted()  ? QStringLiteral("model 'heat-transfer' is not fitted yet")
+        !isFitted()  ? QStringLiteral("model '%1' is not fitted yet").arg(name())
         : !run.screw ? QStringLiteral("run '%1' has no screw to simulate").arg(run.run_id)
                      : QString();
     if (!problem.isEmpty()) {
@@ -110,8 +110,8 @@ ScrewRunOutputs HeatTransferModel::simulateWith(const double* values, const RunD
 
 Eigen::VectorXd HeatTransferModel::predictRun(const RunData& run,
                                               const std::vector<PredictionPoint>& at) const {
-    const auto out =
-        simulateWith(values_.data(), run, prepareScrewRun(run, options_.dt_s, name()), at);
+    const auto out = simulateWith(values_.data(), run,
+                                  prepareScrewRun(run, options_.dt_s, name(), options_.room), at);
     return Eigen::Map<const Eigen::VectorXd>(out.error_um.data(),
                                              Eigen::Index(out.error_um.size()));
 }
@@ -135,12 +135,31 @@ std::size_t HeatTransferModel::writeResiduals(const double* values, const RunDat
     return i;
 }
 
-ReadingResiduals HeatTransferModel::residuals(const RunData& run) const {
-    if (values_.empty()) throw ModelError(QStringLiteral("model 'heat-transfer' is not fitted"));
-    const ScrewRunInputs inputs = prepareScrewRun(run, options_.dt_s, name());
+std::size_t HeatTransferModel::readingCount(const RunData& run,
+                                            const ScrewRunInputs& inputs) const {
     std::size_t count = run.observations.size();
     if (options_.fit_temperatures)
         for (const auto& s : inputs.sensors) count += s.time_s.size();
+    return count;
+}
+
+double HeatTransferModel::cost(const std::vector<double>& values,
+                               const std::vector<RunData>& runs) const {
+    double sum = 0;
+    std::vector<double> r;
+    for (const RunData& run : runs) {
+        const ScrewRunInputs inputs = prepareScrewRun(run, options_.dt_s, name(), options_.room);
+        r.resize(readingCount(run, inputs));
+        writeResiduals(values.data(), run, inputs, options_.huber_sigmas, r.data());
+        for (double v : r) sum += v * v / 2;
+    }
+    return sum;
+}
+
+ReadingResiduals HeatTransferModel::residuals(const RunData& run) const {
+    if (values_.empty()) throw ModelError(QStringLiteral("model '%1' is not fitted").arg(name()));
+    const ScrewRunInputs inputs = prepareScrewRun(run, options_.dt_s, name(), options_.room);
+    const std::size_t count = readingCount(run, inputs);
     std::vector<double> r(count);
     writeResiduals(values_.data(), run, inputs, INFINITY, r.data());
     ReadingResiduals out;
@@ -163,14 +182,14 @@ ReadingResiduals HeatTransferModel::residuals(const RunData& run) const {
 FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     for (const RunData& run : training)
         if (!run.positionDependent())
-            throw ModelError(QStringLiteral("model 'heat-transfer' predicts the positioning error "
-                                            "of the screw, not channel '%1'")
-                                 .arg(run.target_channel));
+            throw ModelError(QStringLiteral("model '%1' predicts the positioning error "
+                                            "of the screw, not channel '%2'")
+                                 .arg(name(), run.target_channel));
     std::vector<ScrewRunInputs> inputs;
     int residualCount = 0;
     int temperatureCount = 0;
     for (const RunData& run : training) {
-        inputs.push_back(prepareScrewRun(run, options_.dt_s, name()));
+        inputs.push_back(prepareScrewRun(run, options_.dt_s, name(), options_.room));
         residualCount += int(run.observations.size());
         if (options_.fit_temperatures)
             for (const auto& s : inputs.back().sensors) temperatureCount += int(s.time_s.size());
@@ -178,7 +197,7 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     residualCount += temperatureCount;
     if (residualCount == 0)
         throw ModelError(
-            QStringLiteral("model 'heat-transfer': the training runs have no readings"));
+            QStringLiteral("model '%1': the training runs have no readings").arg(name()));
 
     const auto& free = variant_.parameters;
     const int n = int(free.size());
@@ -196,8 +215,8 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     };
 
     ceres::Problem problem;
-    ceres::CostFunction* cost = numericCost<ceres::FORWARD>(evaluate, n, residualCount);
-    problem.AddResidualBlock(cost, nullptr, values.data());
+    ceres::CostFunction* simulation = numericCost<ceres::FORWARD>(evaluate, n, residualCount);
+    problem.AddResidualBlock(simulation, nullptr, values.data());
     for (int i = 0; i < n; ++i) {
         problem.SetParameterLowerBound(values.data(), i, free[std::size_t(i)].lower);
         problem.SetParameterUpperBound(values.data(), i, free[std::size_t(i)].upper);
@@ -216,11 +235,12 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     if (cancelRequested())
-        throw ModelError(QStringLiteral("model 'heat-transfer': fit cancelled after %1 iterations")
+        throw ModelError(QStringLiteral("model '%1': fit cancelled after %2 iterations")
+                             .arg(name())
                              .arg(solved.iterations.size()));
     if (!solved.IsSolutionUsable())
-        throw ModelError(QStringLiteral("model 'heat-transfer': identification failed: %1")
-                             .arg(QString::fromStdString(solved.message)));
+        throw ModelError(QStringLiteral("model '%1': identification failed: %2")
+                             .arg(name(), QString::fromStdString(solved.message)));
 
     FitSummary summary;
     summary.iterations = int(solved.iterations.size());
@@ -272,8 +292,9 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     }
     for (const auto& s : inputs.front().sensors) summary.inputs << s.channel_id;
     summary.message = QStringLiteral(
-                          "heat-transfer identified on %1 run(s) in %2 iterations "
-                          "(%3 s)")
+                          "%1 identified on %2 run(s) in %3 iterations "
+                          "(%4 s)")
+                          .arg(name())
                           .arg(training.size())
                           .arg(summary.iterations)
                           .arg(seconds, 0, 'f', 2);

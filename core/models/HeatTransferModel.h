@@ -50,6 +50,7 @@ struct HeatTransferOptions {
     /// … or the parameters by less than this share.
     double parameter_tolerance = 1e-9;
     bool fit_temperatures = true;  ///< false: positioning errors only
+    RoomInput room = RoomInput::Channel;
 };
 
 /// Measured − simulated, reading by reading, for one run.
@@ -91,8 +92,14 @@ protected:
     FitSummary fitRuns(const std::vector<RunData>& training) override;
     Eigen::VectorXd predictRun(const RunData& run,
                                const std::vector<PredictionPoint>& at) const override;
+    /// For a model that chooses its free parameters from the data (sensorless).
+    void setVariant(ScrewModelVariant variant) { variant_ = std::move(variant); }
+    /// What the fit minimises, ½Σ of the robust normalised residuals, at `values`.
+    double cost(const std::vector<double>& values, const std::vector<RunData>& runs) const;
 
 private:
+    /// Positioning errors, and the screw sensors' readings when they are fitted.
+    std::size_t readingCount(const RunData& run, const ScrewRunInputs& inputs) const;
     /// Writes the normalised residuals of one run (Huber at `huberSigmas`,
     /// none when infinite) to `out`; returns how many.
     std::size_t writeResiduals(const double* values, const RunData& run,

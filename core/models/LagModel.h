@@ -1,7 +1,7 @@
 #pragma once
 // A thermal-error model built on LaggedRegression: a concrete model only says
 // which heat-source inputs drive its lag terms (exponential: screw or spindle
-// speed; sensorless: motor power and screw speed).
+// speed).
 
 #include <QStringList>
 #include <vector>

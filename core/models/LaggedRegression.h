@@ -1,5 +1,5 @@
 #pragma once
-// The engine shared by the exponential and the sensorless models:
+// The engine of the exponential model:
 //   E(x,t) = Σ_k e_k(t)·(a_k + b_k·(x − x_fixed))
 // where e_k is the unit-gain first-order lag, time constant τ_k, of one
 // heat-source input (without position dependence: E = Σ_k a_k·e_k(t)).

@@ -38,7 +38,8 @@ physics::ScrewThermalParameters screwParameters(const RunData& run,
     return p;
 }
 
-ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& model) {
+ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& model,
+                               RoomInput room) {
     if (!run.screw)
         throw ModelError(
             QStringLiteral("model '%1' simulates the screw; the campaign has none").arg(model));
@@ -56,14 +57,7 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
             physics::motionFromPositionSamples(run.position_mm.time_s, run.position_mm.value);
     }
 
-    const TemperatureRise& ambient = channelForRole(run, ChannelRole::Ambient, model);
-    requireCoverage(run, ambient.rise_K, in.duration_s);
     const auto steps = static_cast<std::size_t>(std::ceil(in.duration_s / dt_s - 1e-9));
-    in.ambient_C.resize(steps + 1);
-    for (std::size_t k = 0; k <= steps; ++k)
-        in.ambient_C[k] =
-            ambient.reference_C + valueAt(ambient.rise_K, std::min(double(k) * dt_s, in.duration_s),
-                                          run.max_gap_s, run.run_id);
 
     if (!run.torque_Nm.empty()) {
         in.mean_torque_squared_Nm2.resize(steps);
@@ -74,11 +68,25 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
         }
     }
 
+    in.max_gap_s = run.max_gap_s;
+    if (run.interferometer) in.dead_path_mm = run.interferometer->dead_path_mm;
+    if (room == RoomInput::Steady) {
+        // Only rises matter (the error is relative to the run's start), so any
+        // steady room will do.
+        in.ambient_C.assign(steps + 1, in.initial_C);
+        return in;
+    }
+
+    const TemperatureRise& ambient = channelForRole(run, ChannelRole::Ambient, model);
+    requireCoverage(run, ambient.rise_K, in.duration_s);
+    in.ambient_C.resize(steps + 1);
+    for (std::size_t k = 0; k <= steps; ++k)
+        in.ambient_C[k] =
+            ambient.reference_C + valueAt(ambient.rise_K, std::min(double(k) * dt_s, in.duration_s),
+                                          run.max_gap_s, run.run_id);
     // The screw starts at the room temperature it soaked in. Not at its own
     // sensors' first readings: a sensor offset would shift the whole run.
     in.initial_C = ambient.reference_C;
-    in.max_gap_s = run.max_gap_s;
-    if (run.interferometer) in.dead_path_mm = run.interferometer->dead_path_mm;
     if (const TemperatureRise* air = firstUsableOfRole(run, ChannelRole::Air))
         in.air_rise_K = air->rise_K;
     if (const TemperatureRise* structure = firstUsableOfRole(run, ChannelRole::Structure))

@@ -37,9 +37,17 @@ struct ScrewRunInputs {
     double dead_path_mm = 0;  ///< interferometer dead path
 };
 
+/// Where the simulation's room temperature comes from.
+enum class RoomInput {
+    Channel,  ///< the campaign's ambient channel, read as logged
+    Steady,   ///< no temperature channel at all: the room held at its start (sensorless)
+};
+
 /// Throws ModelError when the run lacks what the simulation needs: a screw,
-/// motion (segments or a position column), an ambient channel.
-ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& model);
+/// motion (segments or a position column), an ambient channel (RoomInput::Channel).
+/// With RoomInput::Steady no temperature channel is read, the screw sensors included.
+ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& model,
+                               RoomInput room = RoomInput::Channel);
 
 /// The screw of the campaign with its geometry and material; heat
 /// coefficients from `coefficients` (c_nut, c_b, h, …), numerics from `cells`.

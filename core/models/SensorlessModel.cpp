@@ -1,50 +1,96 @@
 #include "core/models/SensorlessModel.h"
 
-#include "core/models/DriveFriction.h"
-#include "core/models/HeatSourceInputs.h"
-#include "core/models/ModelError.h"
+#include <cmath>
 
-#include <limits>
+#include "core/models/ModelError.h"
+#include "core/models/RunDataAccess.h"
 
 namespace driftlab::models {
+namespace {
 
-SensorlessModel::SensorlessModel(LagSearchOptions search, bool separateInertia)
-    : LagModel({{QStringLiteral("power"), 0, QStringLiteral("W")},
-                {QStringLiteral("speed"), 1, QStringLiteral("rad/s")}},
-               search),
-      separate_inertia_(separateInertia) {}
+HeatTransferOptions sensorlessOptions() {
+    HeatTransferOptions options;
+    options.fit_temperatures = false;
+    options.room = RoomInput::Steady;
+    return options;
+}
+
+/// A motor heat small against the nut's, to ask whether any helps, W/(N·m)².
+constexpr double kMotorHeatProbe_W_per_Nm2 = 1e-3;
+
+void requireTorque(const RunData& run) {
+    if (run.torque_Nm.empty())
+        throw ModelError(QStringLiteral("model 'sensorless' needs the motor torque: run '%1' has "
+                                        "no samples in %2")
+                             .arg(run.run_id, describeSignal(run.torque_Nm)));
+}
+
+}  // namespace
+
+ScrewModelVariant sensorlessScrewModel() {
+    ScrewModelVariant v = baseScrewModel();
+    v.parameters.push_back({QStringLiteral("c_motor"), QStringLiteral("W/(N·m)²"), 0.05, 0, 5});
+    v.physics = [base = v.physics](const double* p, physics::ScrewThermalParameters& s) {
+        base(p, s);
+        s.c_motor_W_per_Nm2 = p[3];
+    };
+    return v;
+}
+
+SensorlessModel::SensorlessModel() : HeatTransferModel(sensorlessOptions(), baseScrewModel()) {}
 
 QString SensorlessModel::describe() const {
     return QStringLiteral(
-        "No temperature sensor: the motor's friction power |torque·ω|, with the "
-        "inertia torque of reversals taken out, and the screw speed, each through "
-        "a first-order thermal lag, with a gain linear in position.");
-}
-
-std::vector<PiecewiseInput> SensorlessModel::inputs(const RunData& run, double until_s) const {
-    if (!run.positionDependent())
-        throw ModelError(QStringLiteral("model 'sensorless' predicts the positioning error of a "
-                                        "feed axis from its motor; it cannot predict channel '%1'")
-                             .arg(run.target_channel));
-    PiecewiseInput speed = screwSpeedFromFeed(run, until_s, name());
-    PiecewiseInput power = frictionPower(run, speed, until_s, inertia_term_, name());
-    return {std::move(power), std::move(speed)};
+        "No temperature sensor: 1-D conduction along the screw, heated by the nut and bearings "
+        "in proportion to the screw speed and by the motor in proportion to its torque², the "
+        "room taken as steady; c_nut, c_b, h (and c_motor where motor heat helps) identified "
+        "from positioning errors");
 }
 
 FitSummary SensorlessModel::fitRuns(const std::vector<RunData>& training) {
-    inertia_term_ = separate_inertia_ ? fitInertiaTerm(training) : 0;
-    FitSummary summary = LagModel::fitRuns(training);
-    summary.parameters[QStringLiteral("inertia_term")] = {
-        inertia_term_, std::numeric_limits<double>::quiet_NaN(), QStringLiteral("N²·m²·s")};
-    if (inertia_term_ == 0)
+    for (const RunData& run : training) requireTorque(run);
+    // Without motor heat first. c_motor is then freed only when a little of it
+    // lowers the cost: a bound-constrained solver crawls towards an optimum on
+    // the bound (most axes, whose motor is not coupled to the screw).
+    setVariant(baseScrewModel());
+    FitSummary summary = HeatTransferModel::fitRuns(training);
+    // The cost's slope in c_motor at 0, one-sided and to second order (the
+    // curvature is large where c_b already warms the fixed end).
+    ScrewModelVariant withMotor = sensorlessScrewModel();
+    for (std::size_t i = 0; i < values().size(); ++i) withMotor.parameters[i].initial = values()[i];
+    std::vector<double> at = values();
+    at.push_back(0);
+    setVariant(withMotor);
+    auto costWithMotor = [&](double c_motor) {
+        at.back() = c_motor;
+        return cost(at, training);
+    };
+    const double h = kMotorHeatProbe_W_per_Nm2;
+    const double slope =
+        (4 * costWithMotor(h) - costWithMotor(2 * h) - 3 * costWithMotor(0)) / (2 * h);
+    if (slope < 0) {
+        summary = HeatTransferModel::fitRuns(training);
+    } else {
+        setVariant(baseScrewModel());
+        summary.parameters[QStringLiteral("c_motor")] = {0, std::nan(""),
+                                                         withMotor.parameters.back().unit};
         summary.notes << QStringLiteral(
-            "no inertia torque separated (no motion programme, or none in the torque): the "
-            "logged torque is read as friction throughout");
+            "no motor heat: heating the fixed end in proportion to the torque² makes the fit "
+            "worse, c_motor = 0");
+    }
+    summary.inputs = QStringList{kTorqueColumn, QStringLiteral("motion")};
+    summary.notes << QStringLiteral(
+                         "the room is taken as steady: a sensorless model cannot see it change "
+                         "(1 K moves a point 1 m from the fixed end by about %1 µm once the "
+                         "screw has followed)")
+                         .arg(messageNumber(training.front().screw->alpha_per_K * 1e6));
     return summary;
 }
 
-QStringList SensorlessModel::inputSignals(const RunData&) const {
-    return {kTorqueColumn, kFeedColumn};
+Eigen::VectorXd SensorlessModel::predictRun(const RunData& run,
+                                            const std::vector<PredictionPoint>& at) const {
+    requireTorque(run);
+    return HeatTransferModel::predictRun(run, at);
 }
 
 }  // namespace driftlab::models

@@ -1,33 +1,36 @@
 #pragma once
-// Sensorless model: the thermal error of a feed axis from its motor alone, no
-// temperature channel. A physics-shaped regression (see docs/models.md for why
-// not a neural network): the friction power P = |torque·ω| and the screw speed
-// |ω| each pass through a first-order lag with a fitted time constant,
-//   E(x,t) = Σ_{s∈{P,|ω|}} lag_s(t)·(a_s + b_s·(x − x_fixed)).
-// The torque of the reversals' accelerations is not friction heat: it is
-// separated with the motion programme first (DriveFriction.h), so a model
-// fitted on a slow state holds on a fast one.
+// Sensorless model: the thermal error of a feed axis from its drive alone, no
+// temperature channel (not even the room's). The screw simulation of DESIGN.md
+// section 4 driven by what the controller and the drive know: the motion
+// (nut and bearing friction heat ∝ screw speed) and the logged motor torque
+// (motor heat ∝ torque², into the fixed end); c_nut, c_b and h are identified
+// by Ceres on positioning errors only, the room held steady, and c_motor with
+// them when a little motor heat lowers the cost.
+//
+// Why physics rather than a regression on torque and speed (docs/models.md):
+// the inertia torque of reversals heats the motor, not the nut, so the torque
+// enters only where its heat goes; and the heat spreads over the stroke the
+// nut runs, which a gain linear in position cannot follow from one state to
+// another.
 
-#include "core/models/LagModel.h"
+#include "core/models/HeatTransferModel.h"
 
 namespace driftlab::models {
 
-class SensorlessModel final : public LagModel {
+/// c_nut, c_b, h and c_motor: the heat-transfer model's coefficients and the
+/// motor's heat per torque².
+ScrewModelVariant sensorlessScrewModel();
+
+class SensorlessModel final : public HeatTransferModel {
 public:
-    /// `separateInertia` false reads the logged torque as friction throughout
-    /// (what the model did before; kept to show the difference).
-    explicit SensorlessModel(LagSearchOptions search = {}, bool separateInertia = true);
+    SensorlessModel();
     QString name() const override { return QStringLiteral("sensorless"); }
     QString describe() const override;
 
 protected:
-    std::vector<PiecewiseInput> inputs(const RunData& run, double until_s) const override;
-    QStringList inputSignals(const RunData& run) const override;
     FitSummary fitRuns(const std::vector<RunData>& training) override;
-
-private:
-    bool separate_inertia_ = true;
-    double inertia_term_ = 0;  ///< J²/t_acc, N²·m²·s (DriveFriction.h)
+    Eigen::VectorXd predictRun(const RunData& run,
+                               const std::vector<PredictionPoint>& at) const override;
 };
 
 }  // namespace driftlab::models

@@ -1,15 +1,12 @@
-// The lag models: the exact first-order response, the exponential model's time
-// constants on a two-source warm-up/cool-down, and the sensorless model on an
-// error that is a lagged function of motor power and screw speed.
+// The lag models: the exact first-order response and the exponential model's
+// time constants on a two-source warm-up/cool-down.
 
 #include <gtest/gtest.h>
-#include <array>
 #include <cmath>
 #include <numbers>
 
 #include "core/models/ExponentialModel.h"
 #include "core/models/FirstOrderLag.h"
-#include "core/models/SensorlessModel.h"
 #include "tests/models/ModelTestSupport.h"
 
 namespace driftlab::models {
@@ -101,55 +98,6 @@ TEST(ExponentialModel, needsTheScrewSpeed) {
     EXPECT_FALSE(fit.success);
     EXPECT_EQ(fit.message, QStringLiteral("model 'exponential' needs the screw speed: run 'S1' has "
                                           "no samples in column 'feed_mm_min'"));
-}
-
-/// Feed and torque sampled every 10 s over three states: 4000 mm/min at
-/// 0.8 N·m, 8000 mm/min at 1.3 N·m, standstill; the sign flips as the axis
-/// reciprocates.
-Campaign motorCampaign(bool withTorque, const std::function<double(double, double)>& error) {
-    Campaign c = test::feedAxisCampaign({});
-    auto state = [](double t) -> std::size_t { return t < 3600 ? 0 : t < 7200 ? 1 : 2; };
-    auto sign = [](double t) { return std::lround(t / 10) % 2 == 0 ? 1.0 : -1.0; };
-    const std::array<double, 3> feed{4000, 8000, 0}, torque{0.8, 1.3, 0};
-    std::map<QString, test::Profile> columns{
-        {kFeedColumn, [=](double t) { return sign(t) * feed[state(t)]; }}};
-    if (withTorque) columns[kTorqueColumn] = [=](double t) { return sign(t) * torque[state(t)]; };
-    driftlab::Run run = test::sampledRun(c, QStringLiteral("S1"), 3 * 3600, 10, columns);
-    test::addPositioning(run, 300, 3 * 3600, error);
-    c.runs.push_back(run);
-    return c;
-}
-
-TEST(SensorlessModel, fitsAnErrorLaggingMotorPowerAndSpeed) {
-    const double tauP = 1500, aP = 0.02, bP = 1e-4;
-    const double tauW = 5000, aW = 0.01, bW = 5e-5;
-    const std::vector<std::pair<double, double>> power{
-        {0, 0.8 * screwSpeed(4000)}, {3600, 1.3 * screwSpeed(8000)}, {7200, 0}};
-    const std::vector<std::pair<double, double>> speed{
-        {0, screwSpeed(4000)}, {3600, screwSpeed(8000)}, {7200, 0}};
-    const Campaign c = motorCampaign(true, [&](double t, double x) {
-        const double dx = x - test::kFixedEndMm;
-        return lagOfSteps(power, tauP, t) * (aP + bP * dx) +
-               lagOfSteps(speed, tauW, t) * (aW + bW * dx);
-    });
-    SensorlessModel model;
-    const FitSummary fit = model.fit(dataset(c));
-    ASSERT_TRUE(fit.success) << qPrintable(fit.message);
-    expectParameter(fit, QStringLiteral("power.tau"), tauP, 0.03);
-    expectParameter(fit, QStringLiteral("speed.tau"), tauW, 0.03);
-    expectParameter(fit, QStringLiteral("power.a"), aP, 0.03);
-    expectParameter(fit, QStringLiteral("power.b"), bP, 0.03);
-    EXPECT_LT(fit.rms_um, 1e-3);
-    EXPECT_EQ(fit.inputs, QStringList({kTorqueColumn, kFeedColumn}));
-}
-
-TEST(SensorlessModel, needsTheMotorTorque) {
-    const Campaign c = motorCampaign(false, [](double t, double) { return t / 3600; });
-    SensorlessModel model;
-    const FitSummary fit = model.fit(dataset(c));
-    EXPECT_FALSE(fit.success);
-    EXPECT_EQ(fit.message, QStringLiteral("model 'sensorless' needs the motor torque: run 'S1' has "
-                                          "no samples in column 'torque_Nm'"));
 }
 
 }  // namespace

@@ -100,13 +100,13 @@ TEST(CrossStateMatrix, reportsAFailedFitAndCanBeCancelled) {
     EXPECT_TRUE(unknown.errors.front().startsWith(QStringLiteral("unknown model 'neural'")));
     EXPECT_TRUE(std::isnan(unknown.rms_um[0][0]));
 
-    // These runs log no feed: every sensorless fit fails, each says why.
+    // These runs log no motor torque: every sensorless fit fails, each says why.
     const CrossStateMatrix sensorless =
         crossStateMatrix(QStringLiteral("sensorless"), threeStates());
     ASSERT_EQ(sensorless.errors.size(), 3);
     EXPECT_EQ(sensorless.errors.front(),
-              QStringLiteral("fit on run 'S1': model 'sensorless' needs the screw speed: run 'S1' "
-                             "has no samples in column 'feed_mm_min'"));
+              QStringLiteral("fit on run 'S1': model 'sensorless' needs the motor torque: run 'S1' "
+                             "has no samples in column 'torque_Nm'"));
 
     // Asked before each fit and, through the model's cancel check, at the end
     // of it: the third question is the one before the second fit.

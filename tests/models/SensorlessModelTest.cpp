@@ -1,0 +1,141 @@
+// The sensorless model across the moving states of the rig: fitted on S1 from
+// positioning errors, the motion and the motor torque alone, it must hold on
+// every other state within 3× the heat-transfer model (issue 10), which reads
+// the screw's sensors and the room. The rig's room swing is the one thing no
+// sensorless model can see: shown by giving the same model the room.
+#include <gtest/gtest.h>
+
+#include <QStringList>
+#include <cmath>
+#include <iostream>
+
+#include "core/models/HeatTransferModel.h"
+#include "core/models/SensorlessModel.h"
+#include "core/rig/CampaignSimulator.h"
+
+using namespace driftlab;
+
+namespace {
+
+/// S1 8000, S2 6500, S3 15000 mm/min on one range; S4, S5 other ranges.
+std::vector<models::RunData> fiveStates(double roomSwing_K, double motorHeat_W_per_Nm2 = 0) {
+    rig::RigSpec spec;
+    spec.seed = 41;
+    spec.environment.ambient_swing_K = roomSwing_K;
+    spec.effects.motor_heat_W_per_Nm2 = motorHeat_W_per_Nm2;
+    const Campaign campaign = rig::simulateCampaign(spec);
+    QStringList ids;
+    for (const auto& r : campaign.runs) ids << r.id;
+    auto data = models::buildDataset(campaign, ids);
+    EXPECT_TRUE(data.ok()) << qPrintable(data.error);
+    return data.runs;
+}
+
+/// RMS on each run of `model` fitted on `train`.
+std::vector<double> scoresOf(models::ThermalErrorModel& model, const models::RunData& train,
+                             const std::vector<models::RunData>& runs) {
+    const auto fit = model.fit({train});
+    EXPECT_TRUE(fit.success) << qPrintable(fit.message);
+    std::vector<double> rms;
+    for (const auto& run : runs) {
+        const auto p = model.predict(run);
+        EXPECT_TRUE(p.error.isEmpty()) << qPrintable(p.error);
+        double squares = 0;
+        const Eigen::VectorXd observed = run.observedErrors();
+        for (Eigen::Index k = 0; k < observed.size(); ++k)
+            squares += std::pow(observed(k) - p.error_um[std::size_t(k)], 2);
+        rms.push_back(std::sqrt(squares / double(std::max<Eigen::Index>(1, observed.size()))));
+    }
+    return rms;
+}
+
+void print(const char* label, const std::vector<double>& rms) {
+    std::cout << label;
+    for (double v : rms) std::cout << " " << v;
+    std::cout << "\n";
+}
+
+/// Sensorless against heat-transfer, both fitted on S1: the ratio on every state.
+void expectWithinThreeTimesHeatTransfer(const std::vector<models::RunData>& runs,
+                                        models::SensorlessModel& sensorless) {
+    models::HeatTransferModel physics;
+    const auto blind = scoresOf(sensorless, runs[0], runs);
+    const auto reference = scoresOf(physics, runs[0], runs);
+    print("fitted on S1, µm RMS on S1..S5\n  sensorless:   ", blind);
+    print("  heat-transfer:", reference);
+    for (std::size_t s = 0; s < runs.size(); ++s)
+        EXPECT_LT(blind[s], 3 * reference[s]) << "state " << runs[s].run_id.toStdString();
+}
+
+}  // namespace
+
+TEST(SensorlessModel, holdsOnEveryStateWithinThreeTimesHeatTransferWhenTheRoomIsSteady) {
+    const auto runs = fiveStates(0);
+    models::SensorlessModel sensorless;
+    expectWithinThreeTimesHeatTransfer(runs, sensorless);
+    // From positioning errors alone it finds the rig's heat: the nut's friction
+    // torque, the convection, and no motor heat (the rig's drive has none).
+    const physics::ScrewThermalParameters truth = rig::RigSpec{}.screw;
+    const auto fit = sensorless.fit({runs[0]});
+    EXPECT_NEAR(fit.parameters.at(QStringLiteral("c_nut")).value, truth.c_nut_W_per_rad_s,
+                0.15 * truth.c_nut_W_per_rad_s);
+    EXPECT_NEAR(fit.parameters.at(QStringLiteral("h")).value, truth.h_W_m2K, 0.15 * truth.h_W_m2K);
+    EXPECT_LT(fit.parameters.at(QStringLiteral("c_motor")).value, 0.05);
+    EXPECT_EQ(fit.inputs, QStringList({kTorqueColumn, QStringLiteral("motion")}));
+}
+
+TEST(SensorlessModel, putsTheInertiaTorqueOfReversalsIntoTheMotorNotTheNut) {
+    // Motor heat ∝ torque², and the fast state's reversals square up large
+    // inertia torques: read as nut friction (the regression this model
+    // replaced) they made S3 miss by 15 µm. Here they heat the fixed end.
+    // The base heat-transfer model has no motor heat and misses S3 by ~14 µm;
+    // the sensorless model stays at the interferometer's noise on every state.
+    const double motorHeat = 1.0;
+    const auto runs = fiveStates(0, motorHeat);
+    models::SensorlessModel sensorless;
+    const auto blind = scoresOf(sensorless, runs[0], runs);
+    print("motor heat 1 W/(N·m)², fitted on S1, µm RMS on S1..S5\n  sensorless:", blind);
+    // A cycle-0 difference of two readings, each with the rig's noise.
+    const double noiseOfADifference_um = rig::InterferometerSpec{}.noise_um * std::sqrt(2.0);
+    for (std::size_t s = 0; s < runs.size(); ++s)
+        EXPECT_LT(blind[s], 1.5 * noiseOfADifference_um)
+            << "state " << runs[s].run_id.toStdString();
+    const auto fit = sensorless.fit({runs[0]});
+    EXPECT_NEAR(fit.parameters.at(QStringLiteral("c_motor")).value, motorHeat, 0.3 * motorHeat);
+}
+
+TEST(SensorlessModel, whatItMissesUnderARoomSwingIsTheRoom) {
+    // The rig's default room swings 0.5 K over 12 h. The screw follows it and no
+    // sensorless model can; the same model given the room channel holds every
+    // state within 3× heat-transfer, so the rest is the room and not the model.
+    const auto runs = fiveStates(0.5);
+    models::SensorlessModel sensorless;
+    models::HeatTransferOptions withRoom;
+    withRoom.fit_temperatures = false;
+    models::HeatTransferModel roomOnly(withRoom, models::sensorlessScrewModel());
+    models::HeatTransferModel physics;
+    const auto blind = scoresOf(sensorless, runs[0], runs);
+    const auto room = scoresOf(roomOnly, runs[0], runs);
+    const auto reference = scoresOf(physics, runs[0], runs);
+    print("room swinging 0.5 K, fitted on S1\n  sensorless:         ", blind);
+    print("  the same with room: ", room);
+    print("  heat-transfer:      ", reference);
+    double worstBlind = 0;
+    for (std::size_t s = 0; s < runs.size(); ++s) {
+        EXPECT_LT(room[s], 3 * reference[s]) << "state " << runs[s].run_id.toStdString();
+        worstBlind = std::max(worstBlind, blind[s] / reference[s]);
+    }
+    // Not hidden: on the worst state the room costs more than the model.
+    EXPECT_GT(worstBlind, 2.0);
+}
+
+TEST(SensorlessModel, needsTheMotorTorque) {
+    auto runs = fiveStates(0);
+    runs[0].torque_Nm = {};
+    runs[0].torque_Nm.name = kTorqueColumn;
+    models::SensorlessModel model;
+    const auto fit = model.fit({runs[0]});
+    EXPECT_FALSE(fit.success);
+    EXPECT_EQ(fit.message, QStringLiteral("model 'sensorless' needs the motor torque: run 'S1' has "
+                                          "no samples in column 'torque_Nm'"));
+}
