@@ -76,9 +76,38 @@ double structureLagStart_s(const std::vector<models::RunData>& runs,
     return best;
 }
 
+/// The room a late room sensor saw, T + τ·dT/dt, on the simulation's even
+/// grid; the slope from a straight line through ±`halfWindow_s` (the room's
+/// own noise would swamp a difference of neighbours). The screw soaked in the
+/// room so seen.
+void roomBeforeItsSensor(ScrewRunInputs& in, double tau_s) {
+    constexpr double halfWindow_s = 600;
+    std::vector<double>& y = in.ambient_C;
+    const std::size_t n = y.size();
+    if (n < 3 || !(tau_s > 0)) return;
+    // Prefix sums of y and k·y: a centred line fit per point in O(1).
+    std::vector<double> sy(n + 1, 0), sky(n + 1, 0);
+    for (std::size_t k = 0; k < n; ++k) {
+        sy[k + 1] = sy[k] + y[k];
+        sky[k + 1] = sky[k] + double(k) * y[k];
+    }
+    const auto w = std::max<std::size_t>(1, std::size_t(halfWindow_s / in.dt_s));
+    std::vector<double> seen(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t a = k > w ? k - w : 0, b = std::min(n - 1, k + w);
+        const double m = double(b - a + 1), mean = (double(a) + double(b)) / 2;
+        // Σ(i − mean)² over a…b and Σ(i − mean)·y_i.
+        const double sxx = m * (m * m - 1) / 12;
+        const double sxy = (sky[b + 1] - sky[a]) - mean * (sy[b + 1] - sy[a]);
+        seen[k] = y[k] + tau_s * sxy / sxx / in.dt_s;
+    }
+    y = std::move(seen);
+    in.initial_C = y.front();
+}
+
 CandidateEffect physical(const QString& cause, std::vector<FreeParameter> parameters,
                          std::function<void(const double*, physics::ScrewThermalParameters&)> f) {
-    return {cause, {}, std::move(parameters), std::move(f), {}};
+    return {cause, {}, std::move(parameters), std::move(f), {}, {}};
 }
 
 CandidateEffect onSensor(
@@ -93,7 +122,8 @@ CandidateEffect onSensor(
                              ScrewRunOutputs& out) {
                 const int s = sensorIndex(in, channel);
                 if (s >= 0) apply(own[0], in, out.sensor_C[std::size_t(s)], std::size_t(s));
-            }};
+            },
+            {}};
 }
 
 /// Whether the runs move at more than one speed (top feeds 10 % apart or
@@ -190,7 +220,24 @@ std::vector<CandidateEffect> candidateEffects(
              [](const double* v, const ScrewRunInputs&, const auto&, ScrewRunOutputs& out) {
                  for (auto& sensor : out.sensor_C)
                      for (double& t : sensor) t -= v[0];
-             }});
+             },
+             {}});
+    // A late room sensor: the screw followed the room the sensor shows only
+    // τ later. The room moves slowly, so its slope is smooth enough to undo
+    // the lag (T + τ·dT/dt); the gain, as for the offset, is on positioning.
+    if (!runs.empty() &&
+        std::any_of(runs.front().temperatures.begin(), runs.front().temperatures.end(),
+                    [](const auto& t) { return t.role == ChannelRole::Ambient; }))
+        candidates.push_back(
+            {QStringLiteral("sensor_lag:") + models::channelForRole(runs.front(),
+                                                                    ChannelRole::Ambient,
+                                                                    QStringLiteral("heat-transfer"))
+                                                 .channel_id,
+             {},
+             {{QStringLiteral("tau"), QStringLiteral("s"), 600, 1, 7200}},
+             {},
+             {},
+             [](const double* v, ScrewRunInputs& in) { roomBeforeItsSensor(in, v[0]); }});
     if (allRunsHave(runs, ChannelRole::Air))
         candidates.push_back(
             {QStringLiteral("air_refraction"),
@@ -200,7 +247,8 @@ std::vector<CandidateEffect> candidateEffects(
              [](const double* v, const ScrewRunInputs& in, const auto& at, ScrewRunOutputs& out) {
                  addToErrors(out, at, in.air_rise_K, in, kEdlen_ppm_per_K * 1e-3 * v[0],
                              [&](double x) { return x + in.dead_path_mm; });
-             }});
+             },
+             {}});
     if (allRunsHave(runs, ChannelRole::Structure))
         // The structure is massive: its growth follows the measured surface
         // temperature with a lag of up to hours.
@@ -214,7 +262,8 @@ std::vector<CandidateEffect> candidateEffects(
              [](const double* v, const ScrewRunInputs& in, const auto& at, ScrewRunOutputs& out) {
                  addToErrors(out, at, lagged(in.structure_rise_K, v[1]), in, v[0],
                              [](double) { return 1.0; });
-             }});
+             },
+             {}});
     return candidates;
 }
 
@@ -234,6 +283,13 @@ models::ScrewModelVariant extendedModel(const std::vector<CandidateEffect>& effe
         for (std::size_t e = 0; e < effects.size(); ++e)
             if (effects[e].physics) effects[e].physics(p + offsets[e], s);
     };
+    bool inputs = false;
+    for (const auto& e : effects) inputs = inputs || bool(e.inputs);
+    if (inputs)
+        v.inputs = [effects, offsets](const double* p, ScrewRunInputs& in) {
+            for (std::size_t e = 0; e < effects.size(); ++e)
+                if (effects[e].inputs) effects[e].inputs(p + offsets[e], in);
+        };
     bool readings = false;
     for (const auto& e : effects) readings = readings || bool(e.readings);
     if (readings)

@@ -24,6 +24,8 @@ struct CandidateEffect {
     std::function<void(const double* own, const models::ScrewRunInputs&,
                        const std::vector<models::PredictionPoint>&, models::ScrewRunOutputs&)>
         readings;
+    /// How they change what drives the simulation (the room); empty for most.
+    std::function<void(const double* own, models::ScrewRunInputs&)> inputs;
 };
 
 /// Every candidate the training runs can support, starting from the base fit

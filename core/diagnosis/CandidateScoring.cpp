@@ -51,6 +51,12 @@ QString effectWords(const Finding& f) {
     if (base == QLatin1String("motor_heat"))
         return QStringLiteral("the servo motor heats the fixed end: %1 W per (N·m)² of torque")
             .arg(v, 0, 'g', 3);
+    if (base == QLatin1String("sensor_lag") && f.effect.channel.isEmpty())
+        return QStringLiteral(
+                   "room sensor %1 follows the room with a first-order lag of %2 s: the screw "
+                   "warmed and cooled with a room the sensor showed only later")
+            .arg(f.cause.section(QLatin1Char(':'), 1))
+            .arg(v, 0, 'f', 0);
     if (base == QLatin1String("sensor_lag"))
         return QStringLiteral(
                    "sensor %1 follows the screw with a first-order lag of %2 s: it reads low "

@@ -103,6 +103,13 @@ std::optional<physics::ScrewThermalParameters> HeatTransferModel::fittedScrew(co
 ScrewRunOutputs HeatTransferModel::simulateWith(const double* values, const RunData& run,
                                                 const ScrewRunInputs& inputs,
                                                 const std::vector<PredictionPoint>& at) const {
+    if (variant_.inputs) {
+        ScrewRunInputs changed = inputs;
+        variant_.inputs(values, changed);
+        ScrewRunOutputs out = simulateScrewRun(changed, parametersWith(values, run), at);
+        if (variant_.readings) variant_.readings(values, changed, at, out);
+        return out;
+    }
     ScrewRunOutputs out = simulateScrewRun(inputs, parametersWith(values, run), at);
     if (variant_.readings) variant_.readings(values, inputs, at, out);
     return out;

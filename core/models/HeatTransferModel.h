@@ -28,6 +28,9 @@ struct ScrewModelVariant {
     std::vector<FreeParameter> parameters;
     /// Sets the free values into the simulation's parameters.
     std::function<void(const double* values, physics::ScrewThermalParameters&)> physics;
+    /// Optional: changes what drives the simulation before it runs (a late
+    /// room sensor: the room the screw saw). On a copy, for each simulation.
+    std::function<void(const double* values, ScrewRunInputs&)> inputs;
     /// Optional: changes the readings after the simulation (sensor or
     /// interferometer effects). Points are the thermal-error points of `out`.
     std::function<void(const double* values, const ScrewRunInputs&,

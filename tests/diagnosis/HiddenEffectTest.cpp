@@ -207,6 +207,7 @@ std::vector<HiddenEffectCase> cases() {
          40,
          10,
          1},
+        {"sensor_lag room 1200 s", "sensor_lag:", {"sensor_lag:ambient=1200"}, 31, 32, 10, 2},
         {"air_refraction 2", "air_refraction", {"air_refraction=2"}, 17, 50, 16, 1},
         {"air_refraction 1", "air_refraction", {"air_refraction=1"}, 18, 32, 10, 2},
         {"air_refraction 0.8", "air_refraction", {"air_refraction=0.8"}, 19},

@@ -1,10 +1,14 @@
-// Calibration offsets on the sensors off the screw. The air and structure
-// sensors are read through their rise from the run's start (refraction and
-// frame growth follow rises), so an offset there cancels exactly: it can be
-// neither found nor harmful, and no candidate pretends to. The room sensor is
-// different: the screw starts at the room temperature it soaked in, so its
-// offset shows against every screw sensor, and the diagnosis has a candidate
-// for it.
+// Sensor effects on the channels off the screw (room, air, structure).
+// Offsets: the air and structure sensors are read through their rise from the
+// run's start (refraction and frame growth follow rises), so an offset there
+// cancels exactly: it can be neither found nor harmful, and no candidate
+// pretends to. The room sensor is different: the screw starts at the room
+// temperature it soaked in, so its offset shows against every screw sensor,
+// and the diagnosis has a candidate for it.
+// Lags: the base model reads neither the air nor the structure sensor, so a
+// lag there changes nothing until refraction or frame growth is present, and
+// then that effect is still what is named. (A late room sensor is visible, in
+// the screw's temperatures, and a candidate: the rig suite hides one.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,12 +43,17 @@ double heldOutRms_um(const Campaign& campaign) {
     return models::scoreModel(base, testData.runs).rms_um;
 }
 
-Campaign withOffset(rig::RigSpec spec, const QString& channel, double offset_K) {
-    QString error;
-    EXPECT_TRUE(rig::applyEffect(
-        spec.effects, QStringLiteral("sensor_offset:%1=%2").arg(channel).arg(offset_K), &error))
-        << qPrintable(error);
+/// The campaign of `spec` with the effects "ID=VALUE" added.
+Campaign withEffects(rig::RigSpec spec, const QStringList& assignments) {
+    for (const QString& assignment : assignments) {
+        QString error;
+        EXPECT_TRUE(rig::applyEffect(spec.effects, assignment, &error)) << qPrintable(error);
+    }
     return rig::simulateCampaign(spec);
+}
+
+Campaign withOffset(const rig::RigSpec& spec, const QString& channel, double offset_K) {
+    return withEffects(spec, {QStringLiteral("sensor_offset:%1=%2").arg(channel).arg(offset_K)});
 }
 
 const std::vector<double>& column(const Campaign& c, const QString& run, const QString& id) {
@@ -90,4 +99,31 @@ TEST(InvisibleOffsets, anOffsetOnTheRoomSensorIsNotInvisibleAndIsNamed) {
     ASSERT_TRUE(f);
     EXPECT_NEAR(f->parameters.at(0).second.value, 0.5, 0.1);
     EXPECT_EQ(f->gain.quantity, QStringLiteral("positioning"));
+}
+
+TEST(InvisibleLags, aLagOnAirOrStructureLeavesTheBaseModelUnchanged) {
+    const rig::RigSpec clean = threeStates();
+    const double reference_um = heldOutRms_um(rig::simulateCampaign(clean));
+    const Campaign lagged =
+        withEffects(clean, {QStringLiteral("sensor_lag:%1=1200").arg(clean.names.air),
+                            QStringLiteral("sensor_lag:%1=1800").arg(clean.names.structure)});
+    EXPECT_NEAR(heldOutRms_um(lagged), reference_um, 1e-6 * reference_um);
+}
+
+TEST(InvisibleLags, aLateStructureSensorStillNamesFrameGrowth) {
+    // The frame grows with the true structure temperature, which the late
+    // sensor follows: the effect leads the reading, which frame_growth's lag
+    // (the frame behind its sensor) cannot express. Its gain drops and its g
+    // comes out larger, but the cause named is the right one.
+    const rig::RigSpec clean = threeStates();
+    const Campaign lagged =
+        withEffects(clean, {QStringLiteral("frame_growth=-3"),
+                            QStringLiteral("sensor_lag:%1=1800").arg(clean.names.structure)});
+    const diagnosis::DiagnosisResult result = diagnosis::diagnose(lagged);
+    ASSERT_TRUE(result.ok()) << qPrintable(result.error);
+    EXPECT_EQ(result.verdict, QStringLiteral("frame_growth"))
+        << qPrintable(result.verdict_evidence);
+    const diagnosis::Finding* f = diagnosis::adoptedFinding(result, QStringLiteral("frame_growth"));
+    ASSERT_TRUE(f);
+    EXPECT_NEAR(f->parameters.at(0).second.value, -3, 0.75);
 }
