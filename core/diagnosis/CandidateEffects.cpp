@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/diagnosis/LateSensor.h"
 #include "core/models/RunDataAccess.h"
 
 namespace driftlab::diagnosis {
@@ -76,38 +77,41 @@ double structureLagStart_s(const std::vector<models::RunData>& runs,
     return best;
 }
 
-/// The room a late room sensor saw, T + τ·dT/dt, on the simulation's even
-/// grid; the slope from a straight line through ±`halfWindow_s` (the room's
-/// own noise would swamp a difference of neighbours). The screw soaked in the
-/// room so seen.
-void roomBeforeItsSensor(ScrewRunInputs& in, double tau_s) {
-    constexpr double halfWindow_s = 600;
-    std::vector<double>& y = in.ambient_C;
-    const std::size_t n = y.size();
-    if (n < 3 || !(tau_s > 0)) return;
-    // Prefix sums of y and k·y: a centred line fit per point in O(1).
-    std::vector<double> sy(n + 1, 0), sky(n + 1, 0);
-    for (std::size_t k = 0; k < n; ++k) {
-        sy[k + 1] = sy[k] + y[k];
-        sky[k + 1] = sky[k] + double(k) * y[k];
-    }
-    const auto w = std::max<std::size_t>(1, std::size_t(halfWindow_s / in.dt_s));
-    std::vector<double> seen(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        const std::size_t a = k > w ? k - w : 0, b = std::min(n - 1, k + w);
-        const double m = double(b - a + 1), mean = (double(a) + double(b)) / 2;
-        // Σ(i − mean)² over a…b and Σ(i − mean)·y_i.
-        const double sxx = m * (m * m - 1) / 12;
-        const double sxy = (sky[b + 1] - sky[a]) - mean * (sy[b + 1] - sy[a]);
-        seen[k] = y[k] + tau_s * sxy / sxx / in.dt_s;
-    }
-    y = std::move(seen);
-    in.initial_C = y.front();
+/// The room a late room sensor saw, on the simulation's even grid. The screw
+/// soaked in the room so seen.
+void roomBeforeItsSensor(double tau_s, ScrewRunInputs& in) {
+    std::vector<double> time_s(in.ambient_C.size());
+    for (std::size_t k = 0; k < time_s.size(); ++k) time_s[k] = double(k) * in.dt_s;
+    in.ambient_C = beforeTheLag(time_s, in.ambient_C, tau_s);
+    if (!in.ambient_C.empty()) in.initial_C = in.ambient_C.front();
+}
+
+/// The rise a late air or structure sensor saw, still a rise from the start.
+void riseBeforeItsSensor(Signal& rise, double tau_s) {
+    rise.value = beforeTheLag(rise.time_s, rise.value, tau_s);
+    if (rise.value.empty()) return;
+    const double start = rise.value.front();
+    for (double& v : rise.value) v -= start;
+}
+
+/// A lag on a sensor off the screw: undone on the simulation's input, gain on
+/// positioning (channel empty). `onTopOf`: the effect that reads the sensor.
+CandidateEffect lateOffScrew(const QString& channel, const QString& measures,
+                             const QString& onTopOf,
+                             std::function<void(double tau_s, ScrewRunInputs&)> undo) {
+    return {QStringLiteral("sensor_lag:") + channel,
+            {},
+            {{QStringLiteral("tau"), QStringLiteral("s"), 600, 1, 7200}},
+            {},
+            {},
+            [undo](const double* v, ScrewRunInputs& in) { undo(v[0], in); },
+            measures,
+            onTopOf};
 }
 
 CandidateEffect physical(const QString& cause, std::vector<FreeParameter> parameters,
                          std::function<void(const double*, physics::ScrewThermalParameters&)> f) {
-    return {cause, {}, std::move(parameters), std::move(f), {}, {}};
+    return {cause, {}, std::move(parameters), std::move(f), {}, {}, {}, {}};
 }
 
 CandidateEffect onSensor(
@@ -123,6 +127,8 @@ CandidateEffect onSensor(
                 const int s = sensorIndex(in, channel);
                 if (s >= 0) apply(own[0], in, out.sensor_C[std::size_t(s)], std::size_t(s));
             },
+            {},
+            {},
             {}};
 }
 
@@ -221,23 +227,28 @@ std::vector<CandidateEffect> candidateEffects(
                  for (auto& sensor : out.sensor_C)
                      for (double& t : sensor) t -= v[0];
              },
+             {},
+             {},
              {}});
     // A late room sensor: the screw followed the room the sensor shows only
-    // τ later. The room moves slowly, so its slope is smooth enough to undo
-    // the lag (T + τ·dT/dt); the gain, as for the offset, is on positioning.
-    if (!runs.empty() &&
-        std::any_of(runs.front().temperatures.begin(), runs.front().temperatures.end(),
-                    [](const auto& t) { return t.role == ChannelRole::Ambient; }))
-        candidates.push_back(
-            {QStringLiteral("sensor_lag:") + models::channelForRole(runs.front(),
-                                                                    ChannelRole::Ambient,
-                                                                    QStringLiteral("heat-transfer"))
-                                                 .channel_id,
-             {},
-             {{QStringLiteral("tau"), QStringLiteral("s"), 600, 1, 7200}},
-             {},
-             {},
-             [](const double* v, ScrewRunInputs& in) { roomBeforeItsSensor(in, v[0]); }});
+    // τ later. Lags on the air and structure sensors act only through
+    // refraction and frame growth (the base model reads neither), so they
+    // tell in the second step, on top of one of those.
+    const auto lateSensor = [&](ChannelRole role, const QString& measures, const QString& onTopOf,
+                                std::function<void(double, ScrewRunInputs&)> undo) {
+        if (allRunsHave(runs, role))
+            candidates.push_back(lateOffScrew(
+                models::channelForRole(runs.front(), role, QStringLiteral("heat-transfer"))
+                    .channel_id,
+                measures, onTopOf, std::move(undo)));
+    };
+    lateSensor(ChannelRole::Ambient, QStringLiteral("room"), {}, roomBeforeItsSensor);
+    lateSensor(ChannelRole::Air, QStringLiteral("air in the beam path"),
+               QStringLiteral("air_refraction"),
+               [](double tau, ScrewRunInputs& in) { riseBeforeItsSensor(in.air_rise_K, tau); });
+    lateSensor(
+        ChannelRole::Structure, QStringLiteral("structure"), QStringLiteral("frame_growth"),
+        [](double tau, ScrewRunInputs& in) { riseBeforeItsSensor(in.structure_rise_K, tau); });
     if (allRunsHave(runs, ChannelRole::Air))
         candidates.push_back(
             {QStringLiteral("air_refraction"),
@@ -248,6 +259,8 @@ std::vector<CandidateEffect> candidateEffects(
                  addToErrors(out, at, in.air_rise_K, in, kEdlen_ppm_per_K * 1e-3 * v[0],
                              [&](double x) { return x + in.dead_path_mm; });
              },
+             {},
+             {},
              {}});
     if (allRunsHave(runs, ChannelRole::Structure))
         // The structure is massive: its growth follows the measured surface
@@ -263,6 +276,8 @@ std::vector<CandidateEffect> candidateEffects(
                  addToErrors(out, at, lagged(in.structure_rise_K, v[1]), in, v[0],
                              [](double) { return 1.0; });
              },
+             {},
+             {},
              {}});
     return candidates;
 }

@@ -26,6 +26,11 @@ struct CandidateEffect {
         readings;
     /// How they change what drives the simulation (the room); empty for most.
     std::function<void(const double* own, models::ScrewRunInputs&)> inputs;
+    /// For an effect on a sensor off the screw: what it measures ("room", …).
+    QString measures;
+    /// The cause it can only act through (a late air sensor through
+    /// air_refraction): tested in the second step, on top of that cause.
+    QString on_top_of;
 };
 
 /// Every candidate the training runs can support, starting from the base fit

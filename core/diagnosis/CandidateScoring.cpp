@@ -53,9 +53,9 @@ QString effectWords(const Finding& f) {
             .arg(v, 0, 'g', 3);
     if (base == QLatin1String("sensor_lag") && f.effect.channel.isEmpty())
         return QStringLiteral(
-                   "room sensor %1 follows the room with a first-order lag of %2 s: the screw "
-                   "warmed and cooled with a room the sensor showed only later")
-            .arg(f.cause.section(QLatin1Char(':'), 1))
+                   "sensor %1 follows the %2 with a first-order lag of %3 s: the axis moved "
+                   "with a %2 temperature the sensor showed only later")
+            .arg(f.cause.section(QLatin1Char(':'), 1), f.effect.measures)
             .arg(v, 0, 'f', 0);
     if (base == QLatin1String("sensor_lag"))
         return QStringLiteral(

@@ -214,7 +214,13 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
         result.base_test = step1.test_summary;
 
         std::vector<std::pair<CandidateEffect, std::vector<double>>> candidates;
-        for (auto& c : candidateEffects(train.runs, step1.train)) candidates.push_back({c, {}});
+        std::vector<CandidateEffect> onTopOfOthers;
+        for (auto& c : candidateEffects(train.runs, step1.train)) {
+            if (c.on_top_of.isEmpty())
+                candidates.push_back({c, {}});
+            else
+                onTopOfOthers.push_back(c);
+        }
         result.findings = testCandidates(step1, candidates, 1, data, &done, 0, 0.7);
         // Nothing is named on a base model that already fits to the noise.
         const Finding* first = result.base_test.atNoiseLevel()
@@ -230,7 +236,11 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
             // again on what the cause leaves, from its own step-1 values.
             if (!leavesOnlyNoise(adopted->test_summary, result.base_test,
                                  options.max_residual_over_noise)) {
+                // The lags of sensors the cause reads first: their fits are the
+                // longest, and the other worker takes the rest meanwhile.
                 std::vector<std::pair<CandidateEffect, std::vector<double>>> rest;
+                for (const auto& c : onTopOfOthers)
+                    if (c.on_top_of == first->cause) rest.push_back({c, {}});
                 for (const auto& f : result.findings) {
                     if (!(f.gain.reduction > 0) || f.cause == first->cause) continue;
                     std::vector<double> own;
