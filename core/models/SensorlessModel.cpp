@@ -48,7 +48,9 @@ QString SensorlessModel::describe() const {
 }
 
 FitSummary SensorlessModel::fitRuns(const std::vector<RunData>& training) {
-    for (const RunData& run : training) requireTorque(run);
+    // A drift target is refused by the simulation's own check, before the torque.
+    for (const RunData& run : training)
+        if (run.positionDependent()) requireTorque(run);
     // Without motor heat first. c_motor is then freed only when a little of it
     // lowers the cost: a bound-constrained solver crawls towards an optimum on
     // the bound (most axes, whose motor is not coupled to the screw).
