@@ -99,37 +99,30 @@ void riseBeforeItsSensor(Signal& rise, double tau_s) {
 CandidateEffect lateOffScrew(const QString& channel, const QString& measures,
                              const QString& onTopOf,
                              std::function<void(double tau_s, ScrewRunInputs&)> undo) {
-    return {QStringLiteral("sensor_lag:") + channel,
-            {},
-            {{QStringLiteral("tau"), QStringLiteral("s"), 600, 1, 7200}},
-            {},
-            {},
-            [undo](const double* v, ScrewRunInputs& in) { undo(v[0], in); },
-            measures,
-            onTopOf};
+    return {.cause = QStringLiteral("sensor_lag:") + channel,
+            .parameters = {{QStringLiteral("tau"), QStringLiteral("s"), 600, 1, 7200}},
+            .inputs = [undo](const double* v, ScrewRunInputs& in) { undo(v[0], in); },
+            .measures = measures,
+            .on_top_of = onTopOf};
 }
 
 CandidateEffect physical(const QString& cause, std::vector<FreeParameter> parameters,
                          std::function<void(const double*, physics::ScrewThermalParameters&)> f) {
-    return {cause, {}, std::move(parameters), std::move(f), {}, {}, {}, {}};
+    return {.cause = cause, .parameters = std::move(parameters), .physics = std::move(f)};
 }
 
 CandidateEffect onSensor(
     const QString& kind, const QString& channel, FreeParameter parameter,
     std::function<void(double, const ScrewRunInputs&, std::vector<double>&, std::size_t sensor)>
         apply) {
-    return {kind + QLatin1Char(':') + channel,
-            channel,
-            {std::move(parameter)},
-            {},
-            [channel, apply](const double* own, const ScrewRunInputs& in, const auto&,
-                             ScrewRunOutputs& out) {
+    return {.cause = kind + QLatin1Char(':') + channel,
+            .channel = channel,
+            .parameters = {std::move(parameter)},
+            .readings = [channel, apply](const double* own, const ScrewRunInputs& in, const auto&,
+                                         ScrewRunOutputs& out) {
                 const int s = sensorIndex(in, channel);
                 if (s >= 0) apply(own[0], in, out.sensor_C[std::size_t(s)], std::size_t(s));
-            },
-            {},
-            {},
-            {}};
+            }};
 }
 
 /// Whether the runs move at more than one speed (top feeds 10 % apart or
@@ -212,24 +205,19 @@ std::vector<CandidateEffect> candidateEffects(
     // error the bent fit gets wrong. (Offsets on the air and structure
     // sensors cancel in their rises; InvisibleOffsets shows it.)
     // The room channel is the one the screw model reads (channelForRole).
-    if (!runs.empty() &&
-        std::any_of(runs.front().temperatures.begin(), runs.front().temperatures.end(),
-                    [](const auto& t) { return t.role == ChannelRole::Ambient; }))
+    const auto channelOf = [&](ChannelRole role) {
+        return models::channelForRole(runs.front(), role, QStringLiteral("heat-transfer"))
+            .channel_id;
+    };
+    if (allRunsHave(runs, ChannelRole::Ambient))
         candidates.push_back(
-            {QStringLiteral("sensor_offset:") +
-                 models::channelForRole(runs.front(), ChannelRole::Ambient,
-                                        QStringLiteral("heat-transfer"))
-                     .channel_id,
-             {},
-             {{QStringLiteral("offset"), QStringLiteral("K"), 0, -10, 10}},
-             {},
-             [](const double* v, const ScrewRunInputs&, const auto&, ScrewRunOutputs& out) {
+            {.cause = QStringLiteral("sensor_offset:") + channelOf(ChannelRole::Ambient),
+             .parameters = {{QStringLiteral("offset"), QStringLiteral("K"), 0, -10, 10}},
+             .readings = [](const double* v, const ScrewRunInputs&, const auto&,
+                            ScrewRunOutputs& out) {
                  for (auto& sensor : out.sensor_C)
                      for (double& t : sensor) t -= v[0];
-             },
-             {},
-             {},
-             {}});
+             }});
     // A late room sensor: the screw followed the room the sensor shows only
     // τ later. Lags on the air and structure sensors act only through
     // refraction and frame growth (the base model reads neither), so they
@@ -237,10 +225,7 @@ std::vector<CandidateEffect> candidateEffects(
     const auto lateSensor = [&](ChannelRole role, const QString& measures, const QString& onTopOf,
                                 std::function<void(double, ScrewRunInputs&)> undo) {
         if (allRunsHave(runs, role))
-            candidates.push_back(lateOffScrew(
-                models::channelForRole(runs.front(), role, QStringLiteral("heat-transfer"))
-                    .channel_id,
-                measures, onTopOf, std::move(undo)));
+            candidates.push_back(lateOffScrew(channelOf(role), measures, onTopOf, std::move(undo)));
     };
     lateSensor(ChannelRole::Ambient, QStringLiteral("room"), {}, roomBeforeItsSensor);
     lateSensor(ChannelRole::Air, QStringLiteral("air in the beam path"),
@@ -250,35 +235,27 @@ std::vector<CandidateEffect> candidateEffects(
         ChannelRole::Structure, QStringLiteral("structure"), QStringLiteral("frame_growth"),
         [](double tau, ScrewRunInputs& in) { riseBeforeItsSensor(in.structure_rise_K, tau); });
     if (allRunsHave(runs, ChannelRole::Air))
-        candidates.push_back(
-            {QStringLiteral("air_refraction"),
-             {},
-             {{QStringLiteral("fraction"), QString(), 0, -5, 5}},
-             {},
-             [](const double* v, const ScrewRunInputs& in, const auto& at, ScrewRunOutputs& out) {
-                 addToErrors(out, at, in.air_rise_K, in, kEdlen_ppm_per_K * 1e-3 * v[0],
-                             [&](double x) { return x + in.dead_path_mm; });
-             },
-             {},
-             {},
-             {}});
+        candidates.push_back({.cause = QStringLiteral("air_refraction"),
+                              .parameters = {{QStringLiteral("fraction"), QString(), 0, -5, 5}},
+                              .readings = [](const double* v, const ScrewRunInputs& in,
+                                             const auto& at, ScrewRunOutputs& out) {
+                                  addToErrors(out, at, in.air_rise_K, in,
+                                              kEdlen_ppm_per_K * 1e-3 * v[0],
+                                              [&](double x) { return x + in.dead_path_mm; });
+                              }});
     if (allRunsHave(runs, ChannelRole::Structure))
         // The structure is massive: its growth follows the measured surface
         // temperature with a lag of up to hours.
         candidates.push_back(
-            {QStringLiteral("frame_growth"),
-             {},
-             {{QStringLiteral("g"), QStringLiteral("µm/K"), 0, -50, 50},
-              {QStringLiteral("tau"), QStringLiteral("s"), structureLagStart_s(runs, baseResiduals),
-               1, 6 * 3600}},
-             {},
-             [](const double* v, const ScrewRunInputs& in, const auto& at, ScrewRunOutputs& out) {
+            {.cause = QStringLiteral("frame_growth"),
+             .parameters = {{QStringLiteral("g"), QStringLiteral("µm/K"), 0, -50, 50},
+                            {QStringLiteral("tau"), QStringLiteral("s"),
+                             structureLagStart_s(runs, baseResiduals), 1, 6 * 3600}},
+             .readings = [](const double* v, const ScrewRunInputs& in, const auto& at,
+                            ScrewRunOutputs& out) {
                  addToErrors(out, at, lagged(in.structure_rise_K, v[1]), in, v[0],
                              [](double) { return 1.0; });
-             },
-             {},
-             {},
-             {}});
+             }});
     return candidates;
 }
 

@@ -12,25 +12,29 @@
 
 namespace driftlab::diagnosis {
 
+/// Built with designated initializers: only what an effect has is named.
 struct CandidateEffect {
-    QString cause;    ///< cause id: "forced_convection", "sensor_lag:T_nut", …
-    QString channel;  ///< the sensor of a `:channel` cause (its gain is on that sensor)
+    QString cause;  ///< cause id: "forced_convection", "sensor_lag:T_nut", …
+    /// The sensor of a `:channel` cause on the screw (its gain is on that
+    /// sensor); empty: the gain is on positioning.
+    QString channel = {};
     std::vector<models::FreeParameter> parameters;  ///< the effect's own
     /// How the effect's values (`own`, in `parameters` order) enter the
     /// simulation; empty for effects on the readings only.
-    std::function<void(const double* own, physics::ScrewThermalParameters&)> physics;
+    std::function<void(const double* own, physics::ScrewThermalParameters&)> physics = {};
     /// How they change the readings after the simulation; empty for effects
     /// on the physics only.
     std::function<void(const double* own, const models::ScrewRunInputs&,
                        const std::vector<models::PredictionPoint>&, models::ScrewRunOutputs&)>
-        readings;
-    /// How they change what drives the simulation (the room); empty for most.
-    std::function<void(const double* own, models::ScrewRunInputs&)> inputs;
+        readings = {};
+    /// How they change what drives the simulation (a late sensor's room,
+    /// air or structure); empty for most.
+    std::function<void(const double* own, models::ScrewRunInputs&)> inputs = {};
     /// For an effect on a sensor off the screw: what it measures ("room", …).
-    QString measures;
+    QString measures = {};
     /// The cause it can only act through (a late air sensor through
     /// air_refraction): tested in the second step, on top of that cause.
-    QString on_top_of;
+    QString on_top_of = {};
 };
 
 /// Every candidate the training runs can support, starting from the base fit

@@ -103,15 +103,13 @@ std::optional<physics::ScrewThermalParameters> HeatTransferModel::fittedScrew(co
 ScrewRunOutputs HeatTransferModel::simulateWith(const double* values, const RunData& run,
                                                 const ScrewRunInputs& inputs,
                                                 const std::vector<PredictionPoint>& at) const {
-    if (variant_.inputs) {
-        ScrewRunInputs changed = inputs;
-        variant_.inputs(values, changed);
-        ScrewRunOutputs out = simulateScrewRun(changed, parametersWith(values, run), at);
-        if (variant_.readings) variant_.readings(values, changed, at, out);
-        return out;
-    }
-    ScrewRunOutputs out = simulateScrewRun(inputs, parametersWith(values, run), at);
-    if (variant_.readings) variant_.readings(values, inputs, at, out);
+    // An effect on the inputs works on a copy: the prepared run serves every
+    // evaluation of the fit.
+    std::optional<ScrewRunInputs> changed;
+    if (variant_.inputs) variant_.inputs(values, changed.emplace(inputs));
+    const ScrewRunInputs& in = changed ? *changed : inputs;
+    ScrewRunOutputs out = simulateScrewRun(in, parametersWith(values, run), at);
+    if (variant_.readings) variant_.readings(values, in, at, out);
     return out;
 }
 

@@ -67,9 +67,11 @@ FitSummary SensorlessModel::fitRuns(const std::vector<RunData>& training) {
         at.back() = c_motor;
         return cost(at, training);
     };
+    // At c_motor = 0 the cost is the base fit's own.
     const double h = kMotorHeatProbe_W_per_Nm2;
-    const double slope =
-        (4 * costWithMotor(h) - costWithMotor(2 * h) - 3 * costWithMotor(0)) / (2 * h);
+    const double slope = (4 * costWithMotor(h) - costWithMotor(2 * h) -
+                          3 * summary.metrics.at(QStringLiteral("final_cost"))) /
+                         (2 * h);
     if (slope < 0) {
         summary = HeatTransferModel::fitRuns(training);
     } else {

@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "core/models/HeatTransferModel.h"
+#include "core/models/ModelScore.h"
 #include "core/models/SensorlessModel.h"
 #include "core/rig/CampaignSimulator.h"
 
@@ -38,13 +39,9 @@ std::vector<double> scoresOf(models::ThermalErrorModel& model, const models::Run
     EXPECT_TRUE(fit.success) << qPrintable(fit.message);
     std::vector<double> rms;
     for (const auto& run : runs) {
-        const auto p = model.predict(run);
-        EXPECT_TRUE(p.error.isEmpty()) << qPrintable(p.error);
-        double squares = 0;
-        const Eigen::VectorXd observed = run.observedErrors();
-        for (Eigen::Index k = 0; k < observed.size(); ++k)
-            squares += std::pow(observed(k) - p.error_um[std::size_t(k)], 2);
-        rms.push_back(std::sqrt(squares / double(std::max<Eigen::Index>(1, observed.size()))));
+        const models::Score score = models::scoreModel(model, {run});
+        EXPECT_TRUE(score.ok()) << qPrintable(score.error);
+        rms.push_back(score.rms_um);
     }
     return rms;
 }
