@@ -173,11 +173,17 @@ std::vector<CandidateEffect> candidateEffects(
     for (const auto& r : runs) torque = torque && !r.torque_Nm.empty();
     if (torque)
         candidates.push_back(
-            physical(QStringLiteral("motor_heat"),
-                     {{QStringLiteral("c_motor"), QStringLiteral("W/(N·m)²"), 0.01, 0, 20}},
-                     [](const double* v, physics::ScrewThermalParameters& s) {
-                         s.c_motor_W_per_Nm2 = v[0];
-                     }));
+            {.cause = QStringLiteral("motor_heat"),
+             .parameters = {{QStringLiteral("c_motor"), QStringLiteral("W/(N·m)²"), 0.01, 0, 20},
+                            {QStringLiteral("tau"), QStringLiteral("s"), 120, 1, 3600}},
+             .physics = [](const double* v,
+                           physics::ScrewThermalParameters& s) { s.c_motor_W_per_Nm2 = v[0]; },
+             .inputs =
+                 [](const double* v, ScrewRunInputs& in) {
+                     std::vector<double>& q = in.mean_torque_squared_Nm2;
+                     const double decay = std::exp(-in.dt_s / v[1]);
+                     for (std::size_t k = 1; k < q.size(); ++k) q[k] += (q[k - 1] - q[k]) * decay;
+                 }});
 
     // Sensor effects for every temperature sensor the model reads on the screw.
     if (!runs.empty())

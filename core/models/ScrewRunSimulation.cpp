@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/models/DriveTorque.h"
 #include "core/models/ModelError.h"
 #include "core/models/RunDataAccess.h"
 #include "core/physics/NutHeatDeposition.h"
@@ -59,14 +60,8 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
 
     const auto steps = static_cast<std::size_t>(std::ceil(in.duration_s / dt_s - 1e-9));
 
-    if (!run.torque_Nm.empty()) {
-        in.mean_torque_squared_Nm2.resize(steps);
-        for (std::size_t k = 0; k < steps; ++k) {
-            const double t = (double(k) + 0.5) * dt_s;
-            const double torque = valueAt(run.torque_Nm, t, 1e9, run.run_id);
-            in.mean_torque_squared_Nm2[k] = torque * torque;
-        }
-    }
+    if (!run.torque_Nm.empty())
+        in.mean_torque_squared_Nm2 = meanTorqueSquaredPerStep(run, in.motion, steps, dt_s);
 
     in.max_gap_s = run.max_gap_s;
     if (run.interferometer) in.dead_path_mm = run.interferometer->dead_path_mm;

@@ -186,6 +186,13 @@ def simulate_campaign(spec, with_effects=True, keep_fields=False):
                 true[k] = true[k] + eff["sensor_offset"]["offset_K"]
         meas = {k: v + rng.normal(0, noise["temp_K"], len(ts)) for k, v in true.items()}
         torque_s = rs.drive.torque(vel_s, acc_s) + rng.normal(0, noise["torque_Nm"], len(ts))
+        if spec.get("torque_log") == "rms":
+            # RMS of the drive torque since the previous sample, on the fine grid
+            energy = np.r_[0.0, np.cumsum(rs.torque_f ** 2) * DT_F]
+            k = np.minimum(np.round(ts / DT_F).astype(int), len(energy) - 1)
+            span = np.maximum(np.diff(np.r_[0.0, ts]), DT_F)
+            torque_s = (np.sqrt(np.maximum(np.diff(np.r_[0.0, energy[k]]), 0.0) / span)
+                        + rng.normal(0, noise["torque_Nm"], len(ts)))
 
         # --- interferometer readings -------------------------------------------------
         rd = rs.prog.readings

@@ -65,6 +65,15 @@ def suite():
         effects_fn=lambda sp, om: {"motor_heat": {"k_W_per_Nm2": 0.8, "tau_s": 480.0}})
     add("motor_heat_fast", 402, ["motor_heat"], "motor heat into the fixed end = k*torque^2, 3 min lag",
         effects_fn=lambda sp, om: {"motor_heat": {"k_W_per_Nm2": 0.6, "tau_s": 180.0}})
+    # The same two machines with the torque logged as a drive's RMS channel
+    # (I2t) instead of instantaneous samples, which catch the inertia torque
+    # of the speed changes only by chance.
+    add("motor_heat_lag_rms", 401, ["motor_heat"], "motor_heat_lag with the torque logged as RMS",
+        overrides={"torque_log": "rms"},
+        effects_fn=lambda sp, om: {"motor_heat": {"k_W_per_Nm2": 0.8, "tau_s": 480.0}})
+    add("motor_heat_fast_rms", 402, ["motor_heat"], "motor_heat_fast with the torque logged as RMS",
+        overrides={"torque_log": "rms"},
+        effects_fn=lambda sp, om: {"motor_heat": {"k_W_per_Nm2": 0.6, "tau_s": 180.0}})
 
     add("sensor_lag_nut", 501, None, "nut sensor follows the screw under the nut with a 3 min first-order lag",
         quick=True, effects_fn=lambda sp, om: {"sensor_lag": {"channel": channel_id(sp, "nut"), "tau_s": 180.0}})

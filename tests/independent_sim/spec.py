@@ -145,6 +145,9 @@ def make_spec(name, seed, effects=None, scheme=None, n_runs=None, crlf_bom=False
         "effects": effects or {},
         "crlf_bom": crlf_bom,
     }
+    # How the drive logs its torque: "instantaneous" samples (signed), or
+    # "rms", the RMS since the previous sample that a drive's I2t channel gives.
+    spec["torque_log"] = ov.get("torque_log", "instantaneous")
     return spec
 
 
