@@ -108,7 +108,11 @@ std::vector<double> meanTorqueSquaredPerStep(const RunData& run,
                                              std::size_t steps, double dt_s) {
     Signal squared = run.torque_Nm;
     for (double& v : squared.value) v *= v;
-    if (run.motion.empty() || !run.screw || squared.time_s.size() < 4 * kFeatures || steps == 0)
+    // A log that never goes negative is an RMS (a drive's I²t channel): it
+    // already holds the mean of τ² over each interval.
+    const bool rms = std::ranges::none_of(run.torque_Nm.value, [](double v) { return v < 0; });
+    if (rms || run.motion.empty() || !run.screw || squared.time_s.size() < 4 * kFeatures ||
+        steps == 0)
         return sampleMeans(squared, steps, dt_s, run.run_id);
 
     const Eigen::MatrixXd features = motionFeatures(motion, run.screw->lead_mm, steps, dt_s);

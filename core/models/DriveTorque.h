@@ -24,9 +24,9 @@ namespace driftlab::models {
 /// J²·Δω²/t_acc in a set time; both are features. The coefficients are the
 /// least-squares fit of the squared samples on the features of the steps
 /// they fall in; the α·ω cross terms cancel over each start and stop. RMS
-/// samples are spanned by the same features, so one method serves both.
-///
-/// Without motion segments (motion taken from position samples has no speed
+/// samples are spanned by the same features, but a log that never goes
+/// negative is taken as an RMS and its squares are averaged over each step,
+/// as they are without motion segments (motion taken from position samples has no speed
 /// changes to speak of), or with fewer samples than features, the squared
 /// samples are averaged over each step.
 std::vector<double> meanTorqueSquaredPerStep(const RunData& run,
