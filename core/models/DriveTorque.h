@@ -1,34 +1,43 @@
 #pragma once
 
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "core/models/ThermalErrorData.h"
 
 namespace driftlab::models {
 
-/// The mean of τ² over each step of a screw simulation: what the motor's
-/// copper loss follows.
-///
-/// A drive logs its torque either as instantaneous samples or as an RMS over
-/// the sample interval (I²t). Instantaneous samples a few seconds apart
-/// cannot measure the mean of τ²: most of it comes from the inertia torque of
-/// the speed changes, a few percent of the time, which a sample catches by
-/// chance (on a 5 s log, ±30 % over a quarter of an hour). So the torque is
-/// explained by the motion instead, as a drive engineer would:
-///
-///   τ = F_c·sgn ω + b·ω + J·α,
-///   mean τ² over a step = F_c²·(moving fraction) + 2F_c·b·mean|ω| + b²·mean ω²
-///                        + J²·(energy of the speed changes),
-///
-/// where a speed change Δω costs J²·α·|Δω| at a set acceleration and
-/// J²·Δω²/t_acc in a set time; both are features. The coefficients are the
-/// least-squares fit of the squared samples on the features of the steps
-/// they fall in; the α·ω cross terms cancel over each start and stop. RMS
-/// samples are spanned by the same features, but a log that never goes
-/// negative is taken as an RMS and its squares are averaged over each step,
-/// as they are without motion segments (motion taken from position samples has no speed
-/// changes to speak of), or with fewer samples than features, the squared
-/// samples are averaged over each step.
+// The mean of τ² over each step of a screw simulation: what the motor's
+// copper loss follows.
+//
+// A drive logs its torque either as an RMS over the sample interval (its I²t
+// channel; never negative) or as instantaneous samples (signed). The RMS
+// already holds the mean of τ². Instantaneous samples a few seconds apart do
+// not: most of τ² on short strokes is the inertia torque of the speed
+// changes, a few percent of the time, which a sample catches by chance (on a
+// 5 s log, ±30 % over a quarter of an hour, and 30 % over a whole run). So an
+// instantaneous log is explained by the motion instead, as a drive engineer
+// would, and the drive is identified over all the runs at once (one drive,
+// one inertia):
+//
+//   1. while the speed holds (samples well inside segments of a second or
+//      more), |τ| = F_c + b·|ω|, by least squares;
+//   2. what the speed changes add to τ², J²·∫α² dt, with ∫α² dt per step
+//      from the motion as Σ Δω²/d, Δω the change of the signed speed (a
+//      reversal swings it by twice the speed), d the time it took (the
+//      shorter of the two segments it joins), by least squares on the
+//      squared samples.
+//
+// The α·ω cross terms cancel over each start and stop.
+
+/// The drive of `runs` with a signed torque log and motion segments, or none
+/// (no such run, or too few samples at held speed).
+std::optional<DriveTorqueModel> identifyDriveTorque(std::span<const RunData> runs);
+
+/// Per step of `dt_s`: from the run's drive model when it has one, else the
+/// mean of the squared samples in the step (the interpolated square when it
+/// has none).
 std::vector<double> meanTorqueSquaredPerStep(const RunData& run,
                                              const std::vector<MotionSegment>& motion,
                                              std::size_t steps, double dt_s);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/models/DriveTorque.h"
 #include "core/models/ModelError.h"
 #include "core/models/RunDataAccess.h"
 
@@ -232,6 +233,22 @@ RunData runData(const Campaign& campaign, const Run& run, const DatasetOptions& 
     return data;
 }
 
+// One drive moves the axis in every run: it is identified over all of them,
+// whichever the data set takes (the torque is an input, not what is fitted).
+std::optional<DriveTorqueModel> campaignDrive(const Campaign& campaign) {
+    std::vector<RunData> runs;
+    for (const Run& run : campaign.runs) {
+        if (!isFeedAxisRun(run.kind)) continue;
+        RunData drive;
+        drive.run_id = run.id;
+        drive.screw = campaign.screw;
+        drive.torque_Nm = presentSamples(run, kTorqueColumn);
+        drive.motion = run.motion;
+        runs.push_back(std::move(drive));
+    }
+    return identifyDriveTorque(runs);
+}
+
 }  // namespace
 
 std::vector<PredictionPoint> RunData::observationPoints() const {
@@ -268,6 +285,11 @@ DatasetResult buildDataset(const Campaign& campaign, const QStringList& runIds,
                     QStringLiteral("run '%1' is not in campaign '%2'").arg(id, campaign.name));
             result.runs.push_back(runData(campaign, *run, options));
         }
+        if (const auto drive = campaignDrive(campaign))
+            for (RunData& r : result.runs)
+                if (!r.motion.empty() && std::ranges::any_of(r.torque_Nm.value,
+                                                             [](double v) { return v < 0; }))
+                    r.drive_torque = drive;
     } catch (const ModelError& e) {
         result.runs.clear();
         result.error = e.message;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/domain/Campaign.h"
+#include "core/models/DriveTorqueModel.h"
 
 namespace driftlab::models {
 
@@ -79,6 +80,9 @@ struct RunData {
     Signal position_mm, feed_mm_min, torque_Nm;  ///< axis columns; empty when not logged
     Signal spindle_speed_rpm;  ///< the first speed channel; no name when the campaign has none
     std::vector<MotionSegment> motion;
+    /// The drive identified over the data set's runs when the torque is
+    /// logged as instantaneous samples (see DriveTorque.h); none for an RMS log.
+    std::optional<DriveTorqueModel> drive_torque;
 
     /// The screw's fixed end, zero of the position gain (0 without a screw).
     double fixedEnd_mm() const { return screw ? screw->fixed_end_mm : 0.0; }

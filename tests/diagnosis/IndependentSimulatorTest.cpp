@@ -22,10 +22,9 @@ using namespace driftlab;
 
 namespace {
 
-/// Share of the independent suite named right. Issue 10 asks for 0.9; this
-/// is what the diagnosis reaches today (see docs/diagnosis.md), kept as a
-/// floor so it cannot silently get worse.
-constexpr double kIndependentFloor = 0.5;
+/// Share of the independent suite named right, as issue 10 asks (the rig's
+/// thresholds unchanged; see docs/diagnosis.md for the confusion matrix).
+constexpr double kIndependentFloor = 0.9;
 
 struct Case {
     QString bundle;

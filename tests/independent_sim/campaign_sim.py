@@ -191,8 +191,9 @@ def simulate_campaign(spec, with_effects=True, keep_fields=False):
             energy = np.r_[0.0, np.cumsum(rs.torque_f ** 2) * DT_F]
             k = np.minimum(np.round(ts / DT_F).astype(int), len(energy) - 1)
             span = np.maximum(np.diff(np.r_[0.0, ts]), DT_F)
-            torque_s = (np.sqrt(np.maximum(np.diff(np.r_[0.0, energy[k]]), 0.0) / span)
-                        + rng.normal(0, noise["torque_Nm"], len(ts)))
+            # (an RMS is never negative: the noise folds at zero)
+            torque_s = np.abs(np.sqrt(np.maximum(np.diff(np.r_[0.0, energy[k]]), 0.0) / span)
+                              + rng.normal(0, noise["torque_Nm"], len(ts)))
 
         # --- interferometer readings -------------------------------------------------
         rd = rs.prog.readings
