@@ -61,11 +61,6 @@ Eigen::VectorXd steadySquare(const Eigen::MatrixXd& f, const DriveTorqueModel& d
     return c * c * f.col(0) + 2 * c * b * f.col(1) + b * b * f.col(2);
 }
 
-bool instantaneousLog(const RunData& run) {
-    return run.screw && !run.motion.empty() &&
-           std::ranges::any_of(run.torque_Nm.value, [](double v) { return v < 0; });
-}
-
 std::size_t fitSteps(const RunData& run) {
     return std::size_t(
         std::ceil(std::max(run.torque_Nm.time_s.back(), run.motion.back().end_s) / kFitStep_s));
@@ -92,11 +87,16 @@ std::vector<double> sampleMeans(const Signal& torque, std::size_t steps, double 
 
 }  // namespace
 
+bool instantaneousTorqueLog(const RunData& run) {
+    return run.screw && !run.motion.empty() &&
+           std::ranges::any_of(run.torque_Nm.value, [](double v) { return v < 0; });
+}
+
 std::optional<DriveTorqueModel> identifyDriveTorque(std::span<const RunData> runs) {
     // 1. Held speed: samples at least 0.25 s inside a segment of 1 s or more.
     std::vector<double> speed, magnitude;
     for (const RunData& run : runs) {
-        if (!instantaneousLog(run)) continue;
+        if (!instantaneousTorqueLog(run)) continue;
         std::size_t s = 0;
         for (std::size_t i = 0; i < run.torque_Nm.time_s.size(); ++i) {
             const double t = run.torque_Nm.time_s[i];
@@ -130,7 +130,7 @@ std::optional<DriveTorqueModel> identifyDriveTorque(std::span<const RunData> run
     // once: the least-squares J² of the squared samples' excess over (1).
     double moment = 0, norm = 0;
     for (const RunData& run : runs) {
-        if (!instantaneousLog(run)) continue;
+        if (!instantaneousTorqueLog(run)) continue;
         const std::size_t steps = fitSteps(run);
         const Eigen::MatrixXd f = motionFeatures(run.motion, run.screw->lead_mm, steps, kFitStep_s);
         const Eigen::VectorXd steady = steadySquare(f, drive);

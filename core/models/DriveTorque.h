@@ -31,6 +31,10 @@ namespace driftlab::models {
 //
 // The α·ω cross terms cancel over each start and stop.
 
+/// A signed torque log with motion segments to explain it; a log that never
+/// goes negative is an RMS.
+bool instantaneousTorqueLog(const RunData& run);
+
 /// The drive of `runs` with a signed torque log and motion segments, or none
 /// (no such run, or too few samples at held speed).
 std::optional<DriveTorqueModel> identifyDriveTorque(std::span<const RunData> runs);

@@ -287,9 +287,7 @@ DatasetResult buildDataset(const Campaign& campaign, const QStringList& runIds,
         }
         if (const auto drive = campaignDrive(campaign))
             for (RunData& r : result.runs)
-                if (!r.motion.empty() && std::ranges::any_of(r.torque_Nm.value,
-                                                             [](double v) { return v < 0; }))
-                    r.drive_torque = drive;
+                if (instantaneousTorqueLog(r)) r.drive_torque = drive;
     } catch (const ModelError& e) {
         result.runs.clear();
         result.error = e.message;
