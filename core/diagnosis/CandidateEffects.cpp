@@ -171,6 +171,8 @@ std::vector<CandidateEffect> candidateEffects(
         [](const double* v, physics::ScrewThermalParameters& s) { s.nut_heat_exponent = v[0]; }));
     bool torque = !runs.empty();
     for (const auto& r : runs) torque = torque && !r.torque_Nm.empty();
+    // The motor's copper loss reaches the screw through the motor housing and
+    // flange, minutes late: a first-order lag on τ², its time constant free.
     if (torque)
         candidates.push_back(
             {.cause = QStringLiteral("motor_heat"),

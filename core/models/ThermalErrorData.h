@@ -80,7 +80,7 @@ struct RunData {
     Signal position_mm, feed_mm_min, torque_Nm;  ///< axis columns; empty when not logged
     Signal spindle_speed_rpm;  ///< the first speed channel; no name when the campaign has none
     std::vector<MotionSegment> motion;
-    /// The drive identified over the data set's runs when the torque is
+    /// The drive identified over all the campaign's runs when the torque is
     /// logged as instantaneous samples (see DriveTorque.h); none for an RMS log.
     std::optional<DriveTorqueModel> drive_torque;
 
