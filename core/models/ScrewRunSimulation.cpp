@@ -65,7 +65,8 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
 
     in.max_gap_s = run.max_gap_s;
     if (run.interferometer) in.dead_path_mm = run.interferometer->dead_path_mm;
-    if (room == RoomInput::Steady) {
+    const bool roomLogged = firstUsableOfRole(run, ChannelRole::Ambient) != nullptr;
+    if (room == RoomInput::Steady || (room == RoomInput::RoomOnly && !roomLogged)) {
         // Only rises matter (the error is relative to the run's start), so any
         // steady room will do.
         in.ambient_C.assign(steps + 1, in.initial_C);
@@ -82,6 +83,7 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
     // The screw starts at the room temperature it soaked in. Not at its own
     // sensors' first readings: a sensor offset would shift the whole run.
     in.initial_C = ambient.reference_C;
+    if (room == RoomInput::RoomOnly) return in;
     if (const TemperatureRise* air = firstUsableOfRole(run, ChannelRole::Air))
         in.air_rise_K = air->rise_K;
     if (const TemperatureRise* structure = firstUsableOfRole(run, ChannelRole::Structure))

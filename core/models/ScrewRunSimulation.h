@@ -39,13 +39,15 @@ struct ScrewRunInputs {
 
 /// Where the simulation's room temperature comes from.
 enum class RoomInput {
-    Channel,  ///< the campaign's ambient channel, read as logged
-    Steady,   ///< no temperature channel at all: the room held at its start (sensorless)
+    Channel,   ///< the campaign's ambient channel, read as logged
+    RoomOnly,  ///< the ambient channel where logged, else steady; no sensor on the machine
+    Steady,    ///< no temperature channel at all: the room held at its start
 };
 
 /// Throws ModelError when the run lacks what the simulation needs: a screw,
 /// motion (segments or a position column), an ambient channel (RoomInput::Channel).
-/// With RoomInput::Steady no temperature channel is read, the screw sensors included.
+/// With RoomInput::Steady no temperature channel is read, the screw sensors included;
+/// with RoomInput::RoomOnly the ambient channel alone, when the run logs it.
 ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& model,
                                RoomInput room = RoomInput::Channel);
 

@@ -8,10 +8,10 @@
 namespace driftlab::models {
 namespace {
 
-HeatTransferOptions sensorlessOptions() {
+HeatTransferOptions sensorlessOptions(RoomInput room) {
     HeatTransferOptions options;
     options.fit_temperatures = false;
-    options.room = RoomInput::Steady;
+    options.room = room;
     return options;
 }
 
@@ -37,14 +37,15 @@ ScrewModelVariant sensorlessScrewModel() {
     return v;
 }
 
-SensorlessModel::SensorlessModel() : HeatTransferModel(sensorlessOptions(), baseScrewModel()) {}
+SensorlessModel::SensorlessModel(RoomInput room)
+    : HeatTransferModel(sensorlessOptions(room), baseScrewModel()) {}
 
 QString SensorlessModel::describe() const {
     return QStringLiteral(
-        "No temperature sensor: 1-D conduction along the screw, heated by the nut and bearings "
-        "in proportion to the screw speed and by the motor in proportion to its torque², the "
-        "room taken as steady; c_nut, c_b, h (and c_motor where motor heat helps) identified "
-        "from positioning errors");
+        "No sensor on the machine: 1-D conduction along the screw, heated by the nut and "
+        "bearings in proportion to the screw speed and by the motor in proportion to its "
+        "torque², in the room's logged temperature (steady where none is logged); c_nut, c_b, "
+        "h (and c_motor where motor heat helps) identified from positioning errors");
 }
 
 FitSummary SensorlessModel::fitRuns(const std::vector<RunData>& training) {
@@ -83,11 +84,17 @@ FitSummary SensorlessModel::fitRuns(const std::vector<RunData>& training) {
             "worse, c_motor = 0");
     }
     summary.inputs = QStringList{kTorqueColumn, QStringLiteral("motion")};
-    summary.notes << QStringLiteral(
-                         "the room is taken as steady: a sensorless model cannot see it change "
-                         "(1 K moves a point 1 m from the fixed end by about %1 µm once the "
-                         "screw has followed)")
-                         .arg(messageNumber(training.front().screw->alpha_per_K * 1e6));
+    const bool blind = options().room == RoomInput::Steady;
+    if (const TemperatureRise* room = firstUsableOfRole(training.front(), ChannelRole::Ambient);
+        room && !blind)
+        summary.inputs << room->channel_id;
+    else
+        summary.notes << QStringLiteral(
+                             "the room is taken as steady: %1 (1 K moves a point 1 m from the "
+                             "fixed end by about %2 µm once the screw has followed)")
+                             .arg(blind ? QStringLiteral("the model was asked not to read it")
+                                        : QStringLiteral("no room temperature is logged"))
+                             .arg(messageNumber(training.front().screw->alpha_per_K * 1e6));
     return summary;
 }
 
