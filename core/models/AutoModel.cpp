@@ -43,8 +43,8 @@ QString AutoModel::describe() const {
         "family's score.");
 }
 
-double AutoModel::crossValidatedRms(const QString& family,
-                                    const std::vector<RunData>& training) const {
+AutoModel::CrossValidatedScore AutoModel::crossValidatedRms(
+    const QString& family, const std::vector<RunData>& training) const {
     // Folds: each run held out in turn, or a single run's last 30 % of time.
     std::vector<std::pair<std::vector<RunData>, RunData>> folds;
     if (training.size() > 1) {
@@ -60,6 +60,7 @@ double AutoModel::crossValidatedRms(const QString& family,
     }
     double squares = 0;
     std::size_t count = 0;
+    std::vector<double> foldMeanSquares;
     for (const auto& [fitOn, heldOut] : folds) {
         if (cancelRequested()) throw ModelError(QStringLiteral("model 'auto': fit cancelled"));
         const std::unique_ptr<ThermalErrorModel> model = makeModel(family);
@@ -69,29 +70,53 @@ double AutoModel::crossValidatedRms(const QString& family,
         const Prediction p = model->predict(heldOut);
         if (!p.ok()) throw ModelError(p.error);
         const Eigen::VectorXd measured = heldOut.observedErrors();
+        double fold = 0;
         for (Eigen::Index i = 0; i < measured.size(); ++i)
-            squares += std::pow(measured[i] - p.error_um[std::size_t(i)], 2);
+            fold += std::pow(measured[i] - p.error_um[std::size_t(i)], 2);
+        squares += fold;
         count += std::size_t(measured.size());
+        if (measured.size() > 0) foldMeanSquares.push_back(fold / double(measured.size()));
     }
     if (count == 0) throw ModelError(QStringLiteral("no observation to score on"));
-    return std::sqrt(squares / double(count));
+    CrossValidatedScore score{std::sqrt(squares / double(count)), 0};
+    // The standard error of the mean square over the folds, carried to the
+    // RMS (d√m = dm / 2√m).
+    const std::size_t k = foldMeanSquares.size();
+    if (k > 1 && score.rms_um > 0) {
+        double mean = 0, spread = 0;
+        for (double m : foldMeanSquares) mean += m / double(k);
+        for (double m : foldMeanSquares) spread += (m - mean) * (m - mean) / double(k - 1);
+        score.standard_error_um = std::sqrt(spread / double(k)) / (2 * score.rms_um);
+    }
+    return score;
 }
 
 FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
     chosen_.reset();
-    std::vector<double> scores;
+    std::vector<double> scores, standardErrors;
     QStringList scored, failed;
     for (const QString& family : familiesSimplestFirst()) {
         try {
-            scores.push_back(crossValidatedRms(family, training));
+            const CrossValidatedScore score = crossValidatedRms(family, training);
+            scores.push_back(score.rms_um);
+            standardErrors.push_back(score.standard_error_um);
             scored << QStringLiteral("%1 %2 µm").arg(family).arg(scores.back(), 0, 'g', 3);
         } catch (const ModelError& e) {
             if (cancelRequested()) throw;
             scores.push_back(std::numeric_limits<double>::infinity());
+            standardErrors.push_back(0);
             failed << QStringLiteral("%1 (%2)").arg(family, e.message);
         }
     }
-    const std::size_t pick = simplestNearBest(scores);
+    // The one-standard-error rule (Hastie, Tibshirani & Friedman, §7.10): of
+    // the families whose score is within one standard error of the best's, the
+    // simplest. A few training runs rank close families by chance.
+    const auto best = std::min_element(scores.begin(), scores.end());
+    const double tolerance =
+        best == scores.end() || !(*best > 0)
+            ? 0.02
+            : std::max(0.02, standardErrors[std::size_t(best - scores.begin())] / *best);
+    const std::size_t pick = simplestNearBest(scores, tolerance);
     if (pick == scores.size())
         throw ModelError(QStringLiteral("model 'auto': no model family can be fitted and "
                                         "cross-validated on these runs: %1")

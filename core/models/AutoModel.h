@@ -1,8 +1,10 @@
 #pragma once
 // `fit --model auto`: chooses the model family, and with it the inputs, by
 // cross-validation over the training runs only (leave one run out; with a
-// single run, fit on its first 70 % and score on the rest), refits the choice
-// on all training runs and says what it chose and what the others scored.
+// single run, fit on its first 70 % and score on the rest), takes the simplest
+// family within one standard error of the best (a few runs rank close families
+// partly by chance), refits it on all training runs and says what it chose and
+// what the others scored.
 // The held-out test runs never take part in the choice.
 
 #include <memory>
@@ -24,9 +26,14 @@ protected:
                                const std::vector<PredictionPoint>& at) const override;
 
 private:
+    struct CrossValidatedScore {
+        double rms_um;
+        double standard_error_um;  ///< over the folds; 0 with a single fold
+    };
     /// RMS of the family's predictions on data it was not fitted on; throws
     /// ModelError with the family's reason when it cannot be fitted.
-    double crossValidatedRms(const QString& family, const std::vector<RunData>& training) const;
+    CrossValidatedScore crossValidatedRms(const QString& family,
+                                          const std::vector<RunData>& training) const;
 
     std::unique_ptr<ThermalErrorModel> chosen_;
 };

@@ -30,6 +30,34 @@ PiecewiseInput riseInput(const RunData& run, const QString& channel, double unti
         QStringLiteral("run '%1' has no temperature channel '%2'").arg(run.run_id, channel));
 }
 
+/// Whether the channel's rise, over some training run, spans more than ten
+/// times its noise (from successive differences, which a slow rise hardly
+/// touches). A flat channel (the room thermometer of a steady room) carries no
+/// heat; lagged, its noise becomes a slow wander that a fit can match by chance.
+bool risesAboveItsNoise(const std::vector<RunData>& training, const QString& channel) {
+    for (const RunData& run : training)
+        for (const TemperatureRise& t : run.temperatures) {
+            if (t.channel_id != channel) continue;
+            double squares = 0, lo = INFINITY, hi = -INFINITY;
+            std::size_t steps = 0;
+            const std::vector<double>& v = t.rise_K.value;
+            for (std::size_t i = 0; i < v.size(); ++i) {
+                if (!std::isfinite(v[i])) continue;
+                lo = std::min(lo, v[i]);
+                hi = std::max(hi, v[i]);
+                if (i > 0 && std::isfinite(v[i - 1])) {
+                    squares += (v[i] - v[i - 1]) * (v[i] - v[i - 1]);
+                    ++steps;
+                }
+            }
+            if (steps == 0) continue;
+            // White noise σ gives differences of RMS σ·√2.
+            const double noise_K = std::max(std::sqrt(squares / double(steps) / 2), 1e-3);
+            if (hi - lo > 10 * noise_K) return true;
+        }
+    return false;
+}
+
 double lastTime(const std::vector<PredictionPoint>& at) {
     double last = 0;
     for (const PredictionPoint& p : at) last = std::max(last, p.time_s);
@@ -209,6 +237,11 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
                              .arg(unlogged.join(QStringLiteral(", ")));
     for (const TemperatureRise& channel : training.front().temperatures) {
         if (unlogged.contains(channel.channel_id)) continue;
+        if (!risesAboveItsNoise(training, channel.channel_id)) {
+            summary.notes
+                << QStringLiteral("left out: %1 stays within its noise").arg(channel.channel_id);
+            continue;
+        }
         try {
             for (const RunData& run : training) {
                 const std::vector<PredictionPoint> at = run.observationPoints();

@@ -39,10 +39,14 @@ double lagOfRise(double s, double tau1_s, double tau2_s) {
 constexpr double kDriftLag_s = 1800;
 
 /// Spindle runs whose z drift is −3 µm/K times the housing rise through a lag
-/// of 1800 s: each run heats with its own time constant and amplitude.
-Campaign laggedDriftCampaign() {
-    Campaign c = test::feedAxisCampaign({{QStringLiteral("T_spindle"), ChannelRole::Spindle},
-                                         {QStringLiteral("T_bed"), ChannelRole::Structure}});
+/// of 1800 s: each run heats with its own time constant and amplitude. With
+/// `steadyRoom`, a room thermometer reads 20 °C with ±0.01 K of noise.
+Campaign laggedDriftCampaign(bool steadyRoom = false) {
+    std::vector<std::pair<QString, ChannelRole>> temperatures{
+        {QStringLiteral("T_spindle"), ChannelRole::Spindle},
+        {QStringLiteral("T_bed"), ChannelRole::Structure}};
+    if (steadyRoom) temperatures.emplace_back(QStringLiteral("T_room"), ChannelRole::Ambient);
+    Campaign c = test::feedAxisCampaign(temperatures);
     c.channels.push_back(
         {QStringLiteral("D_z"), Quantity::Displacement, ChannelRole::DriftZ, {}, {}, {}});
     c.sample_columns.push_back(QStringLiteral("D_z"));
@@ -54,6 +58,8 @@ Campaign laggedDriftCampaign() {
             {{QStringLiteral("T_spindle"),
               [=](double t) { return 22 + rise * test::warmCool(t, tau, 1e9); }},
              {QStringLiteral("T_bed"), test::randomWalk(7 + unsigned(r), 0.02, 15, 7200)},
+             {QStringLiteral("T_room"),
+              [](double t) { return 20 + 0.01 * std::round(std::sin(0.37 * t)); }},
              {QStringLiteral("D_z"),
               [=](double t) { return 0.3 - 3 * rise * lagOfRise(t - 60, tau, kDriftLag_s); }}});
         run.kind = RunKind::Spindle;
@@ -100,6 +106,20 @@ TEST(DynamicRegression, aStaticTwoSensorErrorNeedsNoLag) {
     EXPECT_EQ(fit.parameters.at(QStringLiteral("T_nut.b")).unit, QStringLiteral("µm/(K·mm)"));
 }
 
+TEST(DynamicRegression, leavesOutAThermometerThatStaysWithinItsNoise) {
+    // A steady room's thermometer carries no heat; lagged hours long, its noise
+    // becomes a slow wander a fit on a few runs can match by chance.
+    const Campaign c = laggedDriftCampaign(true);
+    DynamicRegressionModel arx;
+    const FitSummary fit = arx.fit(dataset(c, {"SP1", "SP2"}, QStringLiteral("D_z")));
+    ASSERT_TRUE(fit.success) << qPrintable(fit.message);
+    EXPECT_EQ(fit.notes.filter(QStringLiteral("left out: T_room stays within its noise")).size(),
+              1)
+        << qPrintable(fit.notes.join(QLatin1Char('\n')));
+    EXPECT_FALSE(fit.inputs.contains(QStringLiteral("T_room")));
+    EXPECT_TRUE(fit.inputs.contains(QStringLiteral("T_spindle")));
+}
+
 TEST(AutoModel, aSingleTrainingRunIsSplitInTimeAndTheChoiceIsSaid) {
     const Campaign c = laggedDriftCampaign();
     AutoModel model;
@@ -134,53 +154,70 @@ double leastSquaresHeldOut(const std::vector<RunData>& train, const std::vector<
 }
 
 TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleRuns) {
-    rig::RigSpec spec;
-    spec.runs.clear();
-    spec.spindle_runs = 6;
-    const Campaign c = rig::simulateCampaign(spec);
-    const QStringList trainRuns{"SP1", "SP2", "SP3"}, testRuns{"SP4", "SP5", "SP6"};
-    std::printf("channel  auto (chosen)          all rises  best pair (on training)\n");
-    for (const char* target : {"D_x", "D_y", "D_z", "D_a", "D_b"}) {
-        SCOPED_TRACE(target);
-        const std::vector<RunData> train = dataset(c, trainRuns, QString::fromLatin1(target));
-        const std::vector<RunData> test = dataset(c, testRuns, QString::fromLatin1(target));
-        QStringList sensors;
-        for (const TemperatureRise& t : train.front().temperatures)
-            if (t.unusable.isEmpty()) sensors << t.channel_id;
-        ASSERT_GE(sensors.size(), 5);
-        const double allRises = leastSquaresHeldOut(train, test, sensors);
-        // The pair a user would pick from the training runs: least training RSS.
-        double bestPairRss = INFINITY, bestPair = NAN;
-        QString pairNames;
-        for (qsizetype i = 0; i < sensors.size(); ++i)
-            for (qsizetype j = i + 1; j < sensors.size(); ++j) {
-                double rss = 0;
-                const double heldOut =
-                    leastSquaresHeldOut(train, test, {sensors[i], sensors[j]}, &rss);
-                if (rss < bestPairRss) {
-                    bestPairRss = rss;
-                    bestPair = heldOut;
-                    pairNames = sensors[i] + QLatin1Char('+') + sensors[j];
+    // Six spindle campaigns of the rig (seeds 1–6), three runs to train and
+    // three to score, five probes each: 30 chances for the baselines.
+    std::printf("seed channel  auto (chosen)          all rises  best pair (on training)\n");
+    int beaten = 0, cases = 0;
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+        rig::RigSpec spec;
+        spec.seed = seed;
+        spec.runs.clear();
+        spec.spindle_runs = 6;
+        const Campaign c = rig::simulateCampaign(spec);
+        const QStringList trainRuns{"SP1", "SP2", "SP3"}, testRuns{"SP4", "SP5", "SP6"};
+        for (const char* target : {"D_x", "D_y", "D_z", "D_a", "D_b"}) {
+            SCOPED_TRACE(std::string(target) + " seed " + std::to_string(seed));
+            const std::vector<RunData> train = dataset(c, trainRuns, QString::fromLatin1(target));
+            const std::vector<RunData> test = dataset(c, testRuns, QString::fromLatin1(target));
+            QStringList sensors;
+            for (const TemperatureRise& t : train.front().temperatures)
+                if (t.unusable.isEmpty()) sensors << t.channel_id;
+            ASSERT_GE(sensors.size(), 5);
+            const double allRises = leastSquaresHeldOut(train, test, sensors);
+            // The pair a user would pick from the training runs: least training RSS.
+            double bestPairRss = INFINITY, bestPair = NAN;
+            QString pairNames;
+            for (qsizetype i = 0; i < sensors.size(); ++i)
+                for (qsizetype j = i + 1; j < sensors.size(); ++j) {
+                    double rss = 0;
+                    const double heldOut =
+                        leastSquaresHeldOut(train, test, {sensors[i], sensors[j]}, &rss);
+                    if (rss < bestPairRss) {
+                        bestPairRss = rss;
+                        bestPair = heldOut;
+                        pairNames = sensors[i] + QLatin1Char('+') + sensors[j];
+                    }
                 }
+            AutoModel model;
+            const FitSummary fit = model.fit(train);
+            ASSERT_TRUE(fit.success) << qPrintable(fit.message);
+            const Score score = scoreModel(model, test);
+            ASSERT_TRUE(score.ok()) << qPrintable(score.error);
+            std::printf("%4u %-7s %6.3f µm (%-12s) %6.3f µm  %6.3f µm (%s)\n", seed, target,
+                        score.rms_um, qPrintable(model.chosen()), allRises, bestPair,
+                        qPrintable(pairNames));
+            const double baseline = std::min(allRises, bestPair);
+            ++cases;
+            if (score.rms_um < baseline) ++beaten;
+            // Never worse than the baselines by more than the probes' noise (0.1 µm) …
+            EXPECT_LT(score.rms_um, baseline + 0.1);
+            // … and where the drift lags (the shaft and the column core carry no
+            // sensor), far better, with a model that has memory: the static fits
+            // show hysteresis.
+            if (QLatin1String(target) == QLatin1String("D_z") ||
+                QLatin1String(target) == QLatin1String("D_y")) {
+                EXPECT_TRUE(model.chosen() == QStringLiteral("arx") ||
+                            model.chosen() == QStringLiteral("exponential"))
+                    << qPrintable(model.chosen());
+                EXPECT_LT(score.rms_um, 0.5 * baseline);
             }
-        AutoModel model;
-        const FitSummary fit = model.fit(train);
-        ASSERT_TRUE(fit.success) << qPrintable(fit.message);
-        const Score score = scoreModel(model, test);
-        ASSERT_TRUE(score.ok()) << qPrintable(score.error);
-        std::printf("%-8s %6.3f µm (%-12s) %6.3f µm  %6.3f µm (%s)\n", target, score.rms_um,
-                    qPrintable(model.chosen()), allRises, bestPair, qPrintable(pairNames));
-        const double baseline = std::min(allRises, bestPair);
-        // Never worse than the baselines by more than the probes' noise (0.1 µm) …
-        EXPECT_LT(score.rms_um, baseline + 0.1);
-        // … and where the drift lags (the shaft and the column core carry no
-        // sensor), far better: the static fits show hysteresis.
-        if (QLatin1String(target) == QLatin1String("D_z") ||
-            QLatin1String(target) == QLatin1String("D_y")) {
-            EXPECT_EQ(model.chosen(), QStringLiteral("arx"));
-            EXPECT_LT(score.rms_um, 0.5 * baseline);
         }
     }
+    // On the small x and tilt drifts, a few tenths of a µm against the probes'
+    // 0.1 µm, three training runs rank close models partly by chance: `auto`
+    // must beat both baselines on two cases in three, not on every one.
+    std::printf("auto beats both baselines on %d of %d\n", beaten, cases);
+    EXPECT_GE(3 * beaten, 2 * cases);
 }
 
 }  // namespace
