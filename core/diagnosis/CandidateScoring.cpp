@@ -161,23 +161,28 @@ std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffec
 }
 
 QString evidenceFor(const Finding& f, const QStringList& testRuns) {
-    const QString runs = testRuns.join(QStringLiteral(", "));
+    const bool onPositioning = f.gain.quantity == QLatin1String("positioning");
     const QString quantity =
-        f.gain.quantity == QLatin1String("positioning")
+        onPositioning
             ? QStringLiteral("positioning residual")
             : QStringLiteral("residual of %1").arg(f.gain.quantity.section(QLatin1Char(':'), 1));
+    const int digits = f.gain.unit == QLatin1String("K") ? 3 : 2;
+    // The gain's own quantity first; then the other quantities, not the same again.
+    const QString positioning =
+        onPositioning ? QString()
+                      : QStringLiteral("the positioning residual from %1 to %2 µm RMS and ")
+                            .arg(f.test_before.error_rms_um, 0, 'f', 2)
+                            .arg(f.test_after.error_rms_um, 0, 'f', 2);
     return effectWords(f) +
            QStringLiteral(
-               "; on held-out runs %1 the %2 goes from %3 to %4 %5 RMS (%6 % less); the "
-               "positioning residual from %7 to %8 µm RMS and the screw-temperature residual "
-               "from %9 to %10 K RMS")
-               .arg(runs, quantity)
-               .arg(f.gain.test_rms_before, 0, 'f', f.gain.unit == QLatin1String("K") ? 3 : 2)
-               .arg(f.gain.test_rms_after, 0, 'f', f.gain.unit == QLatin1String("K") ? 3 : 2)
+               "; on held-out runs %1 the %2 goes from %3 to %4 %5 RMS (%6 % less); %7"
+               "the screw-temperature residual from %8 to %9 K RMS")
+               .arg(testRuns.join(QStringLiteral(", ")), quantity)
+               .arg(f.gain.test_rms_before, 0, 'f', digits)
+               .arg(f.gain.test_rms_after, 0, 'f', digits)
                .arg(f.gain.unit)
                .arg(100 * f.gain.reduction, 0, 'f', 0)
-               .arg(f.test_before.error_rms_um, 0, 'f', 2)
-               .arg(f.test_after.error_rms_um, 0, 'f', 2)
+               .arg(positioning)
                .arg(f.test_before.temperature_rms_K, 0, 'f', 3)
                .arg(f.test_after.temperature_rms_K, 0, 'f', 3);
 }

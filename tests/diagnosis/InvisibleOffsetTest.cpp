@@ -100,6 +100,10 @@ TEST(InvisibleOffsets, anOffsetOnTheRoomSensorIsNotInvisibleAndIsNamed) {
     ASSERT_TRUE(f);
     EXPECT_NEAR(f->parameters.at(0).second.value, 0.5, 0.1);
     EXPECT_EQ(f->gain.quantity, QStringLiteral("positioning"));
+    // The evidence gives the gain's quantity once, then the screw temperatures.
+    EXPECT_EQ(f->evidence.count(QStringLiteral("positioning residual")), 1)
+        << qPrintable(f->evidence);
+    EXPECT_TRUE(f->evidence.contains(QStringLiteral("the screw-temperature residual from ")));
 }
 
 TEST(InvisibleLags, aLagOnAirOrStructureLeavesTheBaseModelUnchanged) {
