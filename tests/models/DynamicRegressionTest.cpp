@@ -113,8 +113,7 @@ TEST(DynamicRegression, leavesOutAThermometerThatStaysWithinItsNoise) {
     DynamicRegressionModel arx;
     const FitSummary fit = arx.fit(dataset(c, {"SP1", "SP2"}, QStringLiteral("D_z")));
     ASSERT_TRUE(fit.success) << qPrintable(fit.message);
-    EXPECT_EQ(fit.notes.filter(QStringLiteral("left out: T_room stays within its noise")).size(),
-              1)
+    EXPECT_EQ(fit.notes.filter(QStringLiteral("left out: T_room stays within its noise")).size(), 1)
         << qPrintable(fit.notes.join(QLatin1Char('\n')));
     EXPECT_FALSE(fit.inputs.contains(QStringLiteral("T_room")));
     EXPECT_TRUE(fit.inputs.contains(QStringLiteral("T_spindle")));
