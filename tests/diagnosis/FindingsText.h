@@ -1,10 +1,13 @@
 #pragma once
 // What the hidden-effect suites print: every candidate's figures in a
-// diagnosis, one indented line each (so that a wrong verdict shows why), and
-// the confusion matrix.
+// diagnosis, one indented line each (so that a wrong verdict shows why), the
+// confusion matrix and the reliability of the confidence.
 #include <QString>
+#include <algorithm>
 #include <iostream>
 #include <map>
+#include <utility>
+#include <vector>
 
 #include "core/diagnosis/Diagnosis.h"
 
@@ -33,6 +36,31 @@ inline void printConfusion(const char* title, const ConfusionMatrix& confusion, 
         for (const auto& [verdict, n] : verdicts)
             std::cout << "  " << qPrintable(verdict) << " ×" << n;
         std::cout << "\n";
+    }
+}
+
+/// A verdict, what was hidden, and the confidence reported with the verdict.
+struct VerdictOutcome {
+    QString verdict;
+    QString expected;
+    double confidence = 0;
+};
+
+/// Of the named causes (not `none`, not `unexplained`) reported with a
+/// confidence in each band, how many and how many right.
+inline void printReliability(const char* title, const std::vector<VerdictOutcome>& outcomes) {
+    std::cout << "\n" << title << ": confidence band, count, right\n";
+    for (const auto& [lo, hi] :
+         std::vector<std::pair<double, double>>{{0, 0.5}, {0.5, 0.7}, {0.7, 0.9}, {0.9, 1.01}}) {
+        int n = 0, right = 0;
+        for (const VerdictOutcome& o : outcomes)
+            if (o.verdict != QLatin1String("none") && o.verdict != QLatin1String("unexplained") &&
+                o.confidence >= lo && o.confidence < hi) {
+                ++n;
+                right += o.verdict == o.expected;
+            }
+        std::cout << "  [" << lo << ", " << std::min(hi, 1.0) << ")  " << n << "  " << right
+                  << "\n";
     }
 }
 

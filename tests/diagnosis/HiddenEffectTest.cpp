@@ -283,21 +283,9 @@ TEST(HiddenEffects, diagnosisNamesTheHiddenCauseAndNothingOnCleanData) {
     }
     test::printConfusion("confusion matrix", confusion, 20);
     std::cout << "correct: " << correct << " of " << all.size() << "\n";
-    // Reliability: of the named causes reported with confidence in a band,
-    // the share that was right.
-    std::cout << "\nreliability (named causes): confidence band, count, right\n";
-    for (const auto& [lo, hi] :
-         std::vector<std::pair<double, double>>{{0, 0.5}, {0.5, 0.7}, {0.7, 0.9}, {0.9, 1.01}}) {
-        int n = 0, right = 0;
-        for (const Outcome& o : outcomes)
-            if (o.verdict != QLatin1String("none") && o.verdict != QLatin1String("unexplained") &&
-                o.confidence >= lo && o.confidence < hi) {
-                ++n;
-                right += o.verdict == o.expected;
-            }
-        std::cout << "  [" << lo << ", " << std::min(hi, 1.0) << ")  " << n << "  " << right
-                  << "\n";
-    }
+    std::vector<test::VerdictOutcome> reliability;
+    for (const Outcome& o : outcomes) reliability.push_back({o.verdict, o.expected, o.confidence});
+    test::printReliability("reliability (named causes)", reliability);
     EXPECT_GE(double(correct), 0.9 * double(all.size()));
     for (std::size_t i = 0; i < all.size(); ++i)
         if (all[i].expected == QLatin1String("none")) {

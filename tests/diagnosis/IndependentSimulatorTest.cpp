@@ -110,5 +110,9 @@ TEST(IndependentSimulator, diagnosisOnCampaignsItDidNotWrite) {
     }
     test::printConfusion("confusion matrix, independent simulator", confusion, 36);
     std::cout << "correct: " << correct << " of " << cases.size() << "\n";
+    std::vector<test::VerdictOutcome> reliability;
+    for (std::size_t i = 0; i < cases.size(); ++i)
+        reliability.push_back({outcomes[i].verdict, cases[i].expected, outcomes[i].confidence});
+    test::printReliability("reliability (named causes), independent simulator", reliability);
     EXPECT_GE(double(correct), kIndependentFloor * double(cases.size()));
 }
