@@ -113,9 +113,7 @@ FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
     // simplest. A few training runs rank close families by chance.
     const auto best = std::min_element(scores.begin(), scores.end());
     const double tolerance =
-        best == scores.end() || !(*best > 0)
-            ? 0.02
-            : std::max(0.02, standardErrors[std::size_t(best - scores.begin())] / *best);
+        std::max(0.02, *best > 0 ? standardErrors[std::size_t(best - scores.begin())] / *best : 0);
     const std::size_t pick = simplestNearBest(scores, tolerance);
     if (pick == scores.size())
         throw ModelError(QStringLiteral("model 'auto': no model family can be fitted and "

@@ -65,15 +65,19 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
 
     in.max_gap_s = run.max_gap_s;
     if (run.interferometer) in.dead_path_mm = run.interferometer->dead_path_mm;
-    const bool roomLogged = firstUsableOfRole(run, ChannelRole::Ambient) != nullptr;
-    if (room == RoomInput::Steady || (room == RoomInput::RoomOnly && !roomLogged)) {
+    // RoomOnly reads the first usable room channel, the one the sensorless
+    // model names as its input.
+    const TemperatureRise* loggedRoom =
+        room == RoomInput::RoomOnly ? firstUsableOfRole(run, ChannelRole::Ambient) : nullptr;
+    if (room == RoomInput::Steady || (room == RoomInput::RoomOnly && !loggedRoom)) {
         // Only rises matter (the error is relative to the run's start), so any
         // steady room will do.
         in.ambient_C.assign(steps + 1, in.initial_C);
         return in;
     }
 
-    const TemperatureRise& ambient = channelForRole(run, ChannelRole::Ambient, model);
+    const TemperatureRise& ambient =
+        loggedRoom ? *loggedRoom : channelForRole(run, ChannelRole::Ambient, model);
     requireCoverage(run, ambient.rise_K, in.duration_s);
     in.ambient_C.resize(steps + 1);
     for (std::size_t k = 0; k <= steps; ++k)

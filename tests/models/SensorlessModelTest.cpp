@@ -32,11 +32,13 @@ std::vector<models::RunData> fiveStates(double roomSwing_K, double motorHeat_W_p
     return data.runs;
 }
 
-/// RMS on each run of `model` fitted on `train`.
+/// RMS on each run of `model` fitted on `train`; the fit into `fitted` if given.
 std::vector<double> scoresOf(models::ThermalErrorModel& model, const models::RunData& train,
-                             const std::vector<models::RunData>& runs) {
+                             const std::vector<models::RunData>& runs,
+                             models::FitSummary* fitted = nullptr) {
     const auto fit = model.fit({train});
     EXPECT_TRUE(fit.success) << qPrintable(fit.message);
+    if (fitted) *fitted = fit;
     std::vector<double> rms;
     for (const auto& run : runs) {
         const models::Score score = models::scoreModel(model, {run});
@@ -52,16 +54,24 @@ void print(const char* label, const std::vector<double>& rms) {
     std::cout << "\n";
 }
 
+struct AgainstHeatTransfer {
+    models::FitSummary sensorless_fit;
+    std::vector<double> heat_transfer_rms_um;  ///< per state
+};
+
 /// Sensorless against heat-transfer, both fitted on S1: the ratio on every state.
-void expectWithinThreeTimesHeatTransfer(const std::vector<models::RunData>& runs,
-                                        models::SensorlessModel& sensorless) {
+AgainstHeatTransfer expectWithinThreeTimesHeatTransfer(const std::vector<models::RunData>& runs,
+                                                       models::SensorlessModel& sensorless) {
     models::HeatTransferModel physics;
-    const auto blind = scoresOf(sensorless, runs[0], runs);
-    const auto reference = scoresOf(physics, runs[0], runs);
+    AgainstHeatTransfer out;
+    const auto blind = scoresOf(sensorless, runs[0], runs, &out.sensorless_fit);
+    out.heat_transfer_rms_um = scoresOf(physics, runs[0], runs);
     print("fitted on S1, µm RMS on S1..S5\n  sensorless:   ", blind);
-    print("  heat-transfer:", reference);
+    print("  heat-transfer:", out.heat_transfer_rms_um);
     for (std::size_t s = 0; s < runs.size(); ++s)
-        EXPECT_LT(blind[s], 3 * reference[s]) << "state " << runs[s].run_id.toStdString();
+        EXPECT_LT(blind[s], 3 * out.heat_transfer_rms_um[s])
+            << "state " << runs[s].run_id.toStdString();
+    return out;
 }
 
 }  // namespace
@@ -69,11 +79,10 @@ void expectWithinThreeTimesHeatTransfer(const std::vector<models::RunData>& runs
 TEST(SensorlessModel, holdsOnEveryStateWithinThreeTimesHeatTransferWhenTheRoomIsSteady) {
     const auto runs = fiveStates(0);
     models::SensorlessModel sensorless;
-    expectWithinThreeTimesHeatTransfer(runs, sensorless);
+    const auto fit = expectWithinThreeTimesHeatTransfer(runs, sensorless).sensorless_fit;
     // From positioning errors alone it finds the rig's heat: the nut's friction
     // torque, the convection, and no motor heat (the rig's drive has none).
     const physics::ScrewThermalParameters truth = rig::RigSpec{}.screw;
-    const auto fit = sensorless.fit({runs[0]});
     EXPECT_NEAR(fit.parameters.at(QStringLiteral("c_nut")).value, truth.c_nut_W_per_rad_s,
                 0.15 * truth.c_nut_W_per_rad_s);
     EXPECT_NEAR(fit.parameters.at(QStringLiteral("h")).value, truth.h_W_m2K, 0.15 * truth.h_W_m2K);
@@ -110,19 +119,17 @@ TEST(SensorlessModel, readsTheRoomWhereItIsLoggedAndHoldsEveryStateUnderARoomSwi
     // what the room costs is shown, not hidden.
     const auto runs = fiveStates(0.5);
     models::SensorlessModel sensorless;
-    expectWithinThreeTimesHeatTransfer(runs, sensorless);
-    EXPECT_TRUE(sensorless.fit({runs[0]}).inputs.contains(QStringLiteral("T_ambient")));
+    const auto withRoom = expectWithinThreeTimesHeatTransfer(runs, sensorless);
+    EXPECT_TRUE(withRoom.sensorless_fit.inputs.contains(QStringLiteral("T_ambient")));
 
     models::SensorlessModel blindToTheRoom(models::RoomInput::Steady);
-    models::HeatTransferModel physics;
-    const auto blind = scoresOf(blindToTheRoom, runs[0], runs);
-    const auto reference = scoresOf(physics, runs[0], runs);
+    models::FitSummary fit;
+    const auto blind = scoresOf(blindToTheRoom, runs[0], runs, &fit);
     print("room swinging 0.5 K, fitted on S1, blind to the room:", blind);
     double worstBlind = 0;
     for (std::size_t s = 0; s < runs.size(); ++s)
-        worstBlind = std::max(worstBlind, blind[s] / reference[s]);
+        worstBlind = std::max(worstBlind, blind[s] / withRoom.heat_transfer_rms_um[s]);
     EXPECT_GT(worstBlind, 2.0);
-    const auto fit = blindToTheRoom.fit({runs[0]});
     EXPECT_EQ(fit.inputs, QStringList({kTorqueColumn, QStringLiteral("motion")}));
     EXPECT_EQ(fit.notes.filter(QStringLiteral("the room is taken as steady")).size(), 1);
 
