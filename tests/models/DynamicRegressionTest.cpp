@@ -10,23 +10,15 @@
 
 #include "core/models/AutoModel.h"
 #include "core/models/DynamicRegressionModel.h"
-#include "core/models/LeastSquares.h"
 #include "core/models/MlrModel.h"
 #include "core/models/ModelScore.h"
 #include "core/models/RunDataAccess.h"
 #include "core/rig/CampaignSimulator.h"
+#include "tests/models/LeastSquaresBaselines.h"
 #include "tests/models/ModelTestSupport.h"
 
 namespace driftlab::models {
 namespace {
-
-std::vector<RunData> dataset(const Campaign& c, const QStringList& runs, const QString& target) {
-    DatasetOptions options;
-    options.target_channel = target;
-    const DatasetResult data = buildDataset(c, runs, options);
-    EXPECT_TRUE(data.ok()) << qPrintable(data.error);
-    return data.runs;
-}
 
 // Closed form of the first-order lag (τ2) of a first-order rise (τ1) started
 // at rest: y(s) = 1 − (τ1·e^(−s/τ1) − τ2·e^(−s/τ2))/(τ1 − τ2).
@@ -72,7 +64,7 @@ TEST(DynamicRegression, recoversTheLagOfAClosedFormAndPredictsARunHeatedDifferen
     const Campaign c = laggedDriftCampaign();
     const QString z = QStringLiteral("D_z");
     DynamicRegressionModel arx;
-    const FitSummary fit = arx.fit(dataset(c, {"SP1", "SP2"}, z));
+    const FitSummary fit = arx.fit(test::driftDataset(c, {"SP1", "SP2"}, z));
     ASSERT_TRUE(fit.success) << qPrintable(fit.message);
     EXPECT_EQ(fit.inputs, QStringList({QStringLiteral("T_spindle")}));
     // τ to within one step of the log grid (60 s … 8 h in 28 points: ×1.26).
@@ -81,10 +73,10 @@ TEST(DynamicRegression, recoversTheLagOfAClosedFormAndPredictsARunHeatedDifferen
     EXPECT_NEAR(fit.parameters.at(QStringLiteral("T_spindle.a_lag")).value, -3, 0.3);
 
     // Held out: a run heated five times slower than the fastest training run.
-    const std::vector<RunData> test = dataset(c, {"SP3"}, z);
+    const std::vector<RunData> test = test::driftDataset(c, {"SP3"}, z);
     const Score arxScore = scoreModel(arx, test);
     MlrModel mlr;
-    ASSERT_TRUE(mlr.fit(dataset(c, {"SP1", "SP2"}, z)).success);
+    ASSERT_TRUE(mlr.fit(test::driftDataset(c, {"SP1", "SP2"}, z)).success);
     const Score staticScore = scoreModel(mlr, test);
     ASSERT_TRUE(arxScore.ok() && staticScore.ok());
     EXPECT_LT(arxScore.rms_um, 0.03 * arxScore.uncompensated_rms_um);
@@ -96,7 +88,7 @@ TEST(DynamicRegression, aStaticTwoSensorErrorNeedsNoLag) {
     const test::TwoSensorGains gains;
     const Campaign c = test::twoSensorCampaign(2, gains);
     DynamicRegressionModel arx;
-    const FitSummary fit = arx.fit(dataset(c, {"S1", "S2"}, {}));
+    const FitSummary fit = arx.fit(test::driftDataset(c, {"S1", "S2"}, {}));
     ASSERT_TRUE(fit.success) << qPrintable(fit.message);
     EXPECT_TRUE(fit.inputs.contains(QStringLiteral("T_nut")));
     EXPECT_TRUE(fit.inputs.contains(QStringLiteral("T_bearing")));
@@ -111,7 +103,7 @@ TEST(DynamicRegression, leavesOutAThermometerThatStaysWithinItsNoise) {
     // becomes a slow wander a fit on a few runs can match by chance.
     const Campaign c = laggedDriftCampaign(true);
     DynamicRegressionModel arx;
-    const FitSummary fit = arx.fit(dataset(c, {"SP1", "SP2"}, QStringLiteral("D_z")));
+    const FitSummary fit = arx.fit(test::driftDataset(c, {"SP1", "SP2"}, QStringLiteral("D_z")));
     ASSERT_TRUE(fit.success) << qPrintable(fit.message);
     EXPECT_EQ(fit.notes.filter(QStringLiteral("left out: T_room stays within its noise")).size(), 1)
         << qPrintable(fit.notes.join(QLatin1Char('\n')));
@@ -122,7 +114,7 @@ TEST(DynamicRegression, leavesOutAThermometerThatStaysWithinItsNoise) {
 TEST(AutoModel, aSingleTrainingRunIsSplitInTimeAndTheChoiceIsSaid) {
     const Campaign c = laggedDriftCampaign();
     AutoModel model;
-    const FitSummary fit = model.fit(dataset(c, {"SP1"}, QStringLiteral("D_z")));
+    const FitSummary fit = model.fit(test::driftDataset(c, {"SP1"}, QStringLiteral("D_z")));
     ASSERT_TRUE(fit.success) << qPrintable(fit.message);
     ASSERT_FALSE(fit.notes.isEmpty());
     EXPECT_TRUE(fit.notes.front().startsWith(QStringLiteral("auto chose ") + model.chosen()))
@@ -135,27 +127,10 @@ TEST(AutoModel, aSingleTrainingRunIsSplitInTimeAndTheChoiceIsSaid) {
 
 // ---- auto against the least-squares baselines on the rig's spindle runs ----
 
-/// Held-out RMS of least squares (with an offset) on the rises of `channels`.
-double leastSquaresHeldOut(const std::vector<RunData>& train, const std::vector<RunData>& test,
-                           const QStringList& channels, double* trainRss = nullptr) {
-    auto design = [&](const RunData& run) {
-        const Eigen::MatrixXd rises = risesAt(run, channels, run.observationPoints());
-        Eigen::MatrixXd X(rises.rows(), rises.cols() + 1);
-        X << rises, Eigen::VectorXd::Ones(rises.rows());
-        return X;
-    };
-    const LeastSquaresFit fit =
-        solveLeastSquares(stackRows(train, design), stackRows(train, &RunData::observedErrors));
-    if (trainRss) *trainRss = fit.rss;
-    const Eigen::VectorXd r =
-        stackRows(test, &RunData::observedErrors) - stackRows(test, design) * fit.coefficients;
-    return std::sqrt(r.squaredNorm() / double(r.size()));
-}
-
 TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleRuns) {
     // Six spindle campaigns of the rig (seeds 1–6), three runs to train and
     // three to score, five probes each: 30 chances for the baselines.
-    std::printf("seed channel  auto (chosen)          all rises  best pair (on training)\n");
+    test::printAutoAgainstBaselinesHeader();
     int beaten = 0, cases = 0;
     for (unsigned seed = 1; seed <= 6; ++seed) {
         rig::RigSpec spec;
@@ -166,49 +141,27 @@ TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleR
         const QStringList trainRuns{"SP1", "SP2", "SP3"}, testRuns{"SP4", "SP5", "SP6"};
         for (const char* target : {"D_x", "D_y", "D_z", "D_a", "D_b"}) {
             SCOPED_TRACE(std::string(target) + " seed " + std::to_string(seed));
-            const std::vector<RunData> train = dataset(c, trainRuns, QString::fromLatin1(target));
-            const std::vector<RunData> test = dataset(c, testRuns, QString::fromLatin1(target));
-            QStringList sensors;
-            for (const TemperatureRise& t : train.front().temperatures)
-                if (t.unusable.isEmpty()) sensors << t.channel_id;
-            ASSERT_GE(sensors.size(), 5);
-            const double allRises = leastSquaresHeldOut(train, test, sensors);
-            // The pair a user would pick from the training runs: least training RSS.
-            double bestPairRss = INFINITY, bestPair = NAN;
-            QString pairNames;
-            for (qsizetype i = 0; i < sensors.size(); ++i)
-                for (qsizetype j = i + 1; j < sensors.size(); ++j) {
-                    double rss = 0;
-                    const double heldOut =
-                        leastSquaresHeldOut(train, test, {sensors[i], sensors[j]}, &rss);
-                    if (rss < bestPairRss) {
-                        bestPairRss = rss;
-                        bestPair = heldOut;
-                        pairNames = sensors[i] + QLatin1Char('+') + sensors[j];
-                    }
-                }
-            AutoModel model;
-            const FitSummary fit = model.fit(train);
-            ASSERT_TRUE(fit.success) << qPrintable(fit.message);
-            const Score score = scoreModel(model, test);
-            ASSERT_TRUE(score.ok()) << qPrintable(score.error);
-            std::printf("%4u %-7s %6.3f µm (%-12s) %6.3f µm  %6.3f µm (%s)\n", seed, target,
-                        score.rms_um, qPrintable(model.chosen()), allRises, bestPair,
-                        qPrintable(pairNames));
-            const double baseline = std::min(allRises, bestPair);
+            const std::vector<RunData> train =
+                test::driftDataset(c, trainRuns, QString::fromLatin1(target));
+            const std::vector<RunData> test =
+                test::driftDataset(c, testRuns, QString::fromLatin1(target));
+            const test::AutoAgainstBaselines a = test::autoAgainstBaselines(
+                train, test, QStringLiteral("seed %1 %2").arg(seed).arg(QLatin1String(target)));
+            ASSERT_TRUE(a.score.ok());
+            const double baseline = a.baselines.better_um();
             ++cases;
-            if (score.rms_um < baseline) ++beaten;
+            beaten += a.beatsBoth();
             // Never worse than the baselines by more than the probes' noise (0.1 µm) …
-            EXPECT_LT(score.rms_um, baseline + 0.1);
+            EXPECT_LT(a.score.rms_um, baseline + 0.1);
             // … and where the drift lags (the shaft and the column core carry no
             // sensor), far better, with a model that has memory: the static fits
             // show hysteresis.
             if (QLatin1String(target) == QLatin1String("D_z") ||
                 QLatin1String(target) == QLatin1String("D_y")) {
-                EXPECT_TRUE(model.chosen() == QStringLiteral("arx") ||
-                            model.chosen() == QStringLiteral("exponential"))
-                    << qPrintable(model.chosen());
-                EXPECT_LT(score.rms_um, 0.5 * baseline);
+                EXPECT_TRUE(a.chosen == QStringLiteral("arx") ||
+                            a.chosen == QStringLiteral("exponential"))
+                    << qPrintable(a.chosen);
+                EXPECT_LT(a.score.rms_um, 0.5 * baseline);
             }
         }
     }
