@@ -10,10 +10,19 @@ Eigen::VectorXd lagResponse(const PiecewiseInput& input, double tau_s,
                             const std::vector<double>& at_s) {
     std::vector<std::size_t> order(at_s.size());
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return at_s[a] < at_s[b]; });
-    auto step = [tau_s](double e, double u, double dt) {
-        return e + (u - e) * -std::expm1(-dt / tau_s);
+    if (!std::is_sorted(at_s.begin(), at_s.end()))
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t a, std::size_t b) { return at_s[a] < at_s[b]; });
+    // Logged at a fixed interval, the steps repeat one Δt: its decay factor is
+    // computed once (the exponential dominates the cost of a fit's search).
+    double lastDt = -1, lastFactor = 0;
+    auto step = [&](double e, double u, double dt) {
+        if (dt == 0) return e;
+        if (dt != lastDt) {
+            lastDt = dt;
+            lastFactor = -std::expm1(-dt / tau_s);
+        }
+        return e + (u - e) * lastFactor;
     };
 
     Eigen::VectorXd response = Eigen::VectorXd::Zero(Eigen::Index(at_s.size()));

@@ -51,6 +51,23 @@ TEST(FirstOrderLag, matchesTheClosedFormAtUnsortedTimes) {
         EXPECT_NEAR(e[Eigen::Index(i)], lagOfSteps(levels, 300, at[i]), 1e-12) << at[i];
 }
 
+TEST(FirstOrderLag, matchesTheClosedFormWhereTheLoggingIntervalChanges) {
+    // A logger at 10 s, one late sample, then 10 s again and a burst at 2.5 s:
+    // the decay factor of a repeated interval is reused, a new one recomputed.
+    PiecewiseInput input;
+    std::vector<std::pair<double, double>> levels;
+    for (double t : {0.0, 10.0, 20.0, 30.0, 43.7, 53.7, 63.7, 66.2, 68.7, 71.2, 81.2}) {
+        const double u = std::sin(t / 9) + 1.5;
+        input.time_s.push_back(t);
+        input.value.push_back(u);
+        levels.emplace_back(t, u);
+    }
+    const std::vector<double> at{0, 5, 10, 30, 40, 43.7, 60, 66.2, 70, 81.2, 150};
+    const Eigen::VectorXd e = lagResponse(input, 45, at);
+    for (std::size_t i = 0; i < at.size(); ++i)
+        EXPECT_NEAR(e[Eigen::Index(i)], lagOfSteps(levels, 45, at[i]), 1e-12) << at[i];
+}
+
 TEST(ExponentialModel, recoversTheTimeConstantsOfTwoSources) {
     const double warmup_s = 3 * 3600, duration_s = 5 * 3600, feed = 8000;
     const double tau1 = 900, a1 = 0.01, b1 = 1.2e-4;
