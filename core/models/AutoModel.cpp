@@ -1,9 +1,9 @@
 #include "core/models/AutoModel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "core/models/CrossValidation.h"
 #include "core/models/ModelError.h"
 #include "core/models/ModelFactory.h"
 
@@ -92,7 +92,7 @@ AutoModel::CrossValidatedScore AutoModel::crossValidatedRms(
 }
 
 FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
-    chosen_.reset();
+    chosen_.clear();
     std::vector<double> scores, standardErrors;
     QStringList scored, failed;
     for (const QString& family : familiesSimplestFirst()) {
@@ -108,22 +108,32 @@ FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
             failed << QStringLiteral("%1 (%2)").arg(family, e.message);
         }
     }
-    // The one-standard-error rule (Hastie, Tibshirani & Friedman, §7.10): of
-    // the families whose score is within one standard error of the best's, the
-    // simplest. A few training runs rank close families by chance.
-    const auto best = std::min_element(scores.begin(), scores.end());
-    const double tolerance =
-        std::max(0.02, *best > 0 ? standardErrors[std::size_t(best - scores.begin())] / *best : 0);
-    const std::size_t pick = simplestNearBest(scores, tolerance);
-    if (pick == scores.size())
+    // The families within one standard error of the best score (Hastie,
+    // Tibshirani & Friedman, §7.10): a few training runs rank them by chance.
+    // Their mean varies less than any one of them.
+    const double best = *std::min_element(scores.begin(), scores.end());
+    if (!std::isfinite(best))
         throw ModelError(QStringLiteral("model 'auto': no model family can be fitted and "
                                         "cross-validated on these runs: %1")
                              .arg(failed.join(QStringLiteral("; "))));
-    const QString family = familiesSimplestFirst()[qsizetype(pick)];
-    chosen_ = makeModel(family);
-    chosen_->setCancelCheck([this] { return cancelRequested(); });
-    FitSummary summary = chosen_->fit(training);
-    if (!summary.success) throw ModelError(summary.message);
+    const auto bestAt = std::size_t(std::find(scores.begin(), scores.end(), best) - scores.begin());
+    const double window = best * (1 + std::max(0.02, best > 0 ? standardErrors[bestAt] / best : 0));
+    std::vector<std::size_t> members;
+    for (std::size_t k = 0; k < scores.size(); ++k)
+        if (scores[k] <= window) members.push_back(k);
+    std::stable_sort(members.begin(), members.end(),
+                     [&](std::size_t a, std::size_t b) { return scores[a] < scores[b]; });
+
+    std::vector<FitSummary> fits;
+    for (std::size_t k : members) {
+        std::unique_ptr<ThermalErrorModel> model = makeModel(familiesSimplestFirst()[qsizetype(k)]);
+        model->setCancelCheck([this] { return cancelRequested(); });
+        FitSummary fit = model->fit(training);
+        if (!fit.success) throw ModelError(fit.message);
+        chosen_.push_back(std::move(model));
+        fits.push_back(std::move(fit));
+    }
+    FitSummary summary = fits.size() == 1 ? fits.front() : combined(fits);
 
     for (std::size_t k = 0; k < scores.size(); ++k)
         if (std::isfinite(scores[k]))
@@ -132,23 +142,57 @@ FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
     const QString how = training.size() > 1
                             ? QStringLiteral("leaving each training run out in turn")
                             : QStringLiteral("fitting the run's first 70 % and scoring the rest");
-    QStringList notes{QStringLiteral("auto chose %1 by cross-validation over the training runs "
-                                     "(%2): %3")
-                          .arg(family, how, scored.join(QStringLiteral(", ")))};
+    const QString mean = fits.size() > 1
+                             ? QStringLiteral(
+                                   " (their mean: each within one standard error of the "
+                                   "best score)")
+                             : QString();
+    QStringList notes{QStringLiteral("auto chose %1%2 by cross-validation over the training runs "
+                                     "(%3): %4")
+                          .arg(chosen(), mean, how, scored.join(QStringLiteral(", ")))};
     if (!failed.isEmpty())
         notes << QStringLiteral("auto could not try: %1").arg(failed.join(QStringLiteral("; ")));
     summary.notes = notes + summary.notes;
     summary.message = QStringLiteral("model 'auto' chose '%1' and fitted it on %2 run(s)")
-                          .arg(family)
+                          .arg(chosen())
                           .arg(training.size());
+    return summary;
+}
+
+QString AutoModel::chosen() const {
+    QStringList names;
+    for (const auto& model : chosen_) names << model->name();
+    return names.join(QStringLiteral(" + "));
+}
+
+FitSummary AutoModel::combined(const std::vector<FitSummary>& fits) const {
+    // Each family's figures under its own name: "arx/T_spindle.tau".
+    FitSummary summary;
+    for (std::size_t m = 0; m < fits.size(); ++m) {
+        const QString family = chosen_[m]->name();
+        for (const auto& [key, value] : fits[m].parameters)
+            summary.parameters[family + QLatin1Char('/') + key] = value;
+        for (const auto& [key, value] : fits[m].metrics)
+            summary.metrics[family + QLatin1Char('/') + key] = value;
+        for (const QString& input : fits[m].inputs)
+            if (!summary.inputs.contains(input)) summary.inputs << input;
+        for (const QString& note : fits[m].notes)
+            summary.notes << family + QStringLiteral(": ") + note;
+        summary.iterations += fits[m].iterations;
+    }
     return summary;
 }
 
 Eigen::VectorXd AutoModel::predictRun(const RunData& run,
                                       const std::vector<PredictionPoint>& at) const {
-    const Prediction p = chosen_->predict(run, at);
-    if (!p.ok()) throw ModelError(p.error);
-    return Eigen::Map<const Eigen::VectorXd>(p.error_um.data(), Eigen::Index(p.error_um.size()));
+    Eigen::VectorXd sum = Eigen::VectorXd::Zero(Eigen::Index(at.size()));
+    for (const auto& model : chosen_) {
+        const Prediction p = model->predict(run, at);
+        if (!p.ok()) throw ModelError(p.error);
+        sum +=
+            Eigen::Map<const Eigen::VectorXd>(p.error_um.data(), Eigen::Index(p.error_um.size()));
+    }
+    return sum / double(chosen_.size());
 }
 
 }  // namespace driftlab::models

@@ -1,13 +1,16 @@
 #pragma once
 // `fit --model auto`: chooses the model family, and with it the inputs, by
 // cross-validation over the training runs only (leave one run out; with a
-// single run, fit on its first 70 % and score on the rest), takes the simplest
-// family within one standard error of the best (a few runs rank close families
-// partly by chance), refits it on all training runs and says what it chose and
-// what the others scored.
+// single run, fit on its first 70 % and score on the rest), refits on all
+// training runs and says what it chose and what the others scored. The
+// families within one standard error of the best score are equally good on
+// these runs (a few runs rank close families partly by chance): auto predicts
+// with their mean, which varies less than any one of them (forecast
+// combination; Bates & Granger 1969, Clemen 1989).
 // The held-out test runs never take part in the choice.
 
 #include <memory>
+#include <vector>
 
 #include "core/models/ThermalErrorModel.h"
 
@@ -17,8 +20,9 @@ class AutoModel final : public ThermalErrorModel {
 public:
     QString name() const override { return QStringLiteral("auto"); }
     QString describe() const override;
-    /// The family chosen by the last fit; empty before.
-    QString chosen() const { return chosen_ ? chosen_->name() : QString(); }
+    /// The families the last fit predicts with, best cross-validated score
+    /// first, joined by " + " (their mean); empty before a fit.
+    QString chosen() const;
 
 protected:
     FitSummary fitRuns(const std::vector<RunData>& training) override;
@@ -34,8 +38,11 @@ private:
     /// ModelError with the family's reason when it cannot be fitted.
     CrossValidatedScore crossValidatedRms(const QString& family,
                                           const std::vector<RunData>& training) const;
+    /// The summary of a mean of several families: each one's parameters,
+    /// metrics and notes under its name.
+    FitSummary combined(const std::vector<FitSummary>& fits) const;
 
-    std::unique_ptr<ThermalErrorModel> chosen_;
+    std::vector<std::unique_ptr<ThermalErrorModel>> chosen_;
 };
 
 }  // namespace driftlab::models
