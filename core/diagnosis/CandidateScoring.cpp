@@ -1,5 +1,6 @@
 #include "core/diagnosis/CandidateScoring.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace driftlab::diagnosis {
@@ -10,6 +11,22 @@ std::vector<models::ReadingResiduals> residualsOf(const models::HeatTransferMode
     std::vector<models::ReadingResiduals> out;
     for (const auto& run : runs) out.push_back(model.residuals(run));
     return out;
+}
+
+/// The noise of a sensor's residual, K (median over the runs; NaN when the
+/// sensor has none). From the residual, not the reading: the nut sensor's
+/// reading jumps as the nut moves, which the model follows.
+double residualNoise_K(const std::vector<models::ReadingResiduals>& residuals,
+                       const QString& channel) {
+    std::vector<double> perRun;
+    for (const auto& r : residuals)
+        for (const auto& sensor : r.sensors)
+            if (sensor.channel_id == channel)
+                perRun.push_back(temperatureNoise_K(sensor.residual_K));
+    if (perRun.empty()) return NAN;
+    std::nth_element(perRun.begin(), perRun.begin() + std::ptrdiff_t(perRun.size() / 2),
+                     perRun.end());
+    return perRun[perRun.size() / 2];
 }
 
 double value(const Finding& f, std::size_t i) {
@@ -154,7 +171,15 @@ std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffec
     // positioning error worse is a fit compromise, not a cause.
     const bool harmless =
         channel.isEmpty() || f.test_after.error_rms_um <= 1.02 * f.test_before.error_rms_um + 0.02;
-    f.significant = harmless && f.bic_drop > data.options.min_bic_drop &&
+    // Nor is an effect on a sensor that changes its reading by less than the
+    // sensor's noise (with thousands of readings BIC finds that significant):
+    // the part of the held-out residual it removes, √(before² − after²), must
+    // stand above the noise.
+    const double noise_K = channel.isEmpty() ? NAN : residualNoise_K(base.test, channel);
+    const double removed = std::sqrt(
+        std::max(0.0, std::pow(f.gain.test_rms_before, 2) - std::pow(f.gain.test_rms_after, 2)));
+    const bool aboveNoise = !(noise_K > 0) || removed > noise_K;
+    f.significant = harmless && aboveNoise && f.bic_drop > data.options.min_bic_drop &&
                     f.gain.reduction > data.options.min_test_gain;
     f.evidence = evidenceFor(f, data.test_ids);
     return f;

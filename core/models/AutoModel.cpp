@@ -10,7 +10,7 @@
 namespace driftlab::models {
 namespace {
 
-/// The families in order of simplicity: of two nearly as good, the simpler wins.
+/// The families, simplest first: the order they are tried and reported in.
 const QStringList& familiesSimplestFirst() {
     static const QStringList families{
         QStringLiteral("mlr"),         QStringLiteral("poly-position"),

@@ -39,29 +39,43 @@ inline void printConfusion(const char* title, const ConfusionMatrix& confusion, 
     }
 }
 
-/// A verdict, what was hidden, and the confidence reported with the verdict.
-struct VerdictOutcome {
-    QString verdict;
-    QString expected;
+/// One cause a diagnosis named, what was hidden ("a", "a+b", "none",
+/// "unexplained") and the confidence reported with the cause. A finding is
+/// right when it is one of the hidden causes.
+struct NamedCause {
+    QString cause;
+    QString hidden;
     double confidence = 0;
+    bool right() const { return hidden.split(QLatin1Char('+')).contains(cause); }
 };
 
-/// Of the named causes (not `none`, not `unexplained`) reported with a
-/// confidence in each band, how many and how many right.
-inline void printReliability(const char* title, const std::vector<VerdictOutcome>& outcomes) {
-    std::cout << "\n" << title << ": confidence band, count, right\n";
+inline std::vector<NamedCause> namedCauses(const diagnosis::DiagnosisResult& r,
+                                           const QString& hidden) {
+    std::vector<NamedCause> named;
+    for (const QString& cause : r.causes)
+        named.push_back({cause, hidden, diagnosis::adoptedFinding(r, cause)->confidence});
+    return named;
+}
+
+/// Of the causes named with a confidence in each band, how many and how many
+/// right; then the wrong ones.
+inline void printReliability(const char* title, const std::vector<NamedCause>& named) {
+    std::cout << "\n" << title << ": confidence band, causes named, right\n";
     for (const auto& [lo, hi] :
          std::vector<std::pair<double, double>>{{0, 0.5}, {0.5, 0.7}, {0.7, 0.9}, {0.9, 1.01}}) {
         int n = 0, right = 0;
-        for (const VerdictOutcome& o : outcomes)
-            if (o.verdict != QLatin1String("none") && o.verdict != QLatin1String("unexplained") &&
-                o.confidence >= lo && o.confidence < hi) {
+        for (const NamedCause& c : named)
+            if (c.confidence >= lo && c.confidence < hi) {
                 ++n;
-                right += o.verdict == o.expected;
+                right += c.right();
             }
         std::cout << "  [" << lo << ", " << std::min(hi, 1.0) << ")  " << n << "  " << right
                   << "\n";
     }
+    for (const NamedCause& c : named)
+        if (!c.right())
+            std::cout << "  wrong: " << qPrintable(c.cause) << " (confidence " << c.confidence
+                      << "), hidden " << qPrintable(c.hidden) << "\n";
 }
 
 }  // namespace driftlab::test

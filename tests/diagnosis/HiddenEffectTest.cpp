@@ -69,6 +69,7 @@ struct Outcome {
     QString expected;
     double confidence = 0;
     QString detail;
+    std::vector<test::NamedCause> named = {};
 };
 
 rig::RigSpec specFor(const HiddenEffectCase& c) {
@@ -141,7 +142,7 @@ Outcome run(const HiddenEffectCase& c) {
                       .arg(cause, diagnosis::adoptedFinding(result, cause)->evidence);
     if (!result.remaining.isEmpty()) detail += QStringLiteral("\n        ") + result.remaining;
     if (verdict != expected) detail += test::findingsText(result);  // to see why
-    return {verdict, expected, confidence, detail};
+    return {verdict, expected, confidence, detail, test::namedCauses(result, expected)};
 }
 
 std::vector<HiddenEffectCase> cases() {
@@ -283,9 +284,9 @@ TEST(HiddenEffects, diagnosisNamesTheHiddenCauseAndNothingOnCleanData) {
     }
     test::printConfusion("confusion matrix", confusion, 20);
     std::cout << "correct: " << correct << " of " << all.size() << "\n";
-    std::vector<test::VerdictOutcome> reliability;
-    for (const Outcome& o : outcomes) reliability.push_back({o.verdict, o.expected, o.confidence});
-    test::printReliability("reliability (named causes)", reliability);
+    std::vector<test::NamedCause> named;
+    for (const Outcome& o : outcomes) named.insert(named.end(), o.named.begin(), o.named.end());
+    test::printReliability("reliability of the confidence", named);
     EXPECT_GE(double(correct), 0.9 * double(all.size()));
     for (std::size_t i = 0; i < all.size(); ++i)
         if (all[i].expected == QLatin1String("none")) {

@@ -113,6 +113,13 @@ def suite():
         "outside the library: a periodic pitch error (wavelength ~ travel/2.6) whose amplitude grows 2 um/h during warm-up",
         effects_fn=lambda sp, om: {"growing_pitch": {"rate_um_h": 2.0, "wavelength_mm": sp["travel_mm"][1] / 2.6,
                                                      "phase": 0.9}})
+    # Half as strong, on another machine: the positioning structure stays, and
+    # a sensor effect that changes its reading by less than the sensor's noise
+    # must not be named for it (it was, once: a lag of 11 s on a 5 s log).
+    add("unexplained_growing_pitch_weak", 909, ["unexplained"],
+        "outside the library: the growing pitch error at 1 um/h",
+        effects_fn=lambda sp, om: {"growing_pitch": {"rate_um_h": 1.0, "wavelength_mm": sp["travel_mm"][1] / 2.6,
+                                                     "phase": 0.9}})
 
     add("combo_forced_convection_frame_growth", 1001, None,
         "forced convection (m = 0.8, h +1.0 h0 at top speed) and frame growth (3 um/K, 1.5 h lag)",
@@ -145,13 +152,31 @@ def effect_cause_ids(effects):
     return ids
 
 
-def build_one(entry, outroot, refit=True):
+def scaled(effects, f):
+    """The effects with their size times f (a speed exponent: its distance from 1)."""
+    size = {"forced_convection": "h1", "motor_heat": "k_W_per_Nm2", "sensor_lag": "tau_s",
+            "sensor_offset": "offset_K", "air_refraction": "s", "frame_growth": "g_um_K",
+            "growing_pitch": "rate_um_h"}
+    out = {}
+    for k, v in effects.items():
+        v = dict(v)
+        if k == "nut_heat_exponent":
+            v["n"] = 1 + (v["n"] - 1) * f
+        elif k == "zero_step":
+            v["runs"] = {r: [t, d * f] for r, (t, d) in v["runs"].items()}
+        else:
+            v[size[k]] *= f
+        out[k] = v
+    return out
+
+
+def build_one(entry, outroot, refit=True, scale=1.0, seed_offset=0):
     t0 = time.time()
     kw = dict(entry["kw"])
-    spec = make_spec(entry["name"], entry["seed"], **kw)
+    spec = make_spec(entry["name"], entry["seed"] + seed_offset, **kw)
     om_max = 2 * math.pi * max(r["feed_mm_min"] for r in spec["runs"]) / 60.0 / spec["screw"]["lead_mm"]
     if entry["effects_fn"]:
-        spec["effects"] = entry["effects_fn"](spec, om_max)
+        spec["effects"] = scaled(entry["effects_fn"](spec, om_max), scale)
     sim = simulate_campaign(spec)
     write_bundle(spec, sim, os.path.join(outroot, entry["name"]))
 
@@ -234,6 +259,9 @@ def main(argv=None):
     ap.add_argument("--quick", action="store_true", help="one bundle per cause, one null, one unexplained")
     ap.add_argument("--only", default="", help="comma-separated bundle names")
     ap.add_argument("--no-refit", action="store_true", help="skip the base-refit ranking analysis")
+    ap.add_argument("--scale", type=float, default=1.0,
+                    help="every hidden effect's size times this (weaker effects, for the reliability table)")
+    ap.add_argument("--seed-offset", type=int, default=0, help="added to every bundle's seed (other noise)")
     a = ap.parse_args(argv)
     entries = suite()
     if a.quick:
@@ -245,7 +273,7 @@ def main(argv=None):
     t0 = time.time()
     manifest = []
     for e in entries:
-        m = build_one(e, a.out, refit=not a.no_refit)
+        m = build_one(e, a.out, refit=not a.no_refit, scale=a.scale, seed_offset=a.seed_offset)
         manifest.append(m)
         s = m["truth"]
         print(f"{e['name']:42s} expected={m['expected']}  thermal rms {s['thermal_error_rms_um']:.1f} um  "
