@@ -5,12 +5,14 @@
 
 #include <gtest/gtest.h>
 #include <QtGlobal>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "core/models/AutoModel.h"
 #include "core/models/DynamicRegressionModel.h"
 #include "core/models/MlrModel.h"
+#include "core/models/ModelFactory.h"
 #include "core/models/ModelScore.h"
 #include "core/models/RunDataAccess.h"
 #include "core/rig/CampaignSimulator.h"
@@ -123,6 +125,44 @@ TEST(AutoModel, aSingleTrainingRunIsSplitInTimeAndTheChoiceIsSaid) {
     EXPECT_TRUE(fit.metrics.count(QStringLiteral("auto_cv_rms_um.mlr")));
     EXPECT_FALSE(fit.metrics.count(QStringLiteral("auto_cv_rms_um.heat-transfer")))
         << "the screw model cannot predict a drift channel";
+}
+
+TEST(AutoModel, familiesEquallyGoodOnTheTrainingRunsArePredictedWithTheirMean) {
+    // Seed 1's tilt about x: arx and exponential score within one standard
+    // error of each other over the three training runs.
+    rig::RigSpec spec;
+    spec.seed = 1;
+    spec.runs.clear();
+    spec.spindle_runs = 4;
+    const Campaign c = rig::simulateCampaign(spec);
+    const auto train = test::driftDataset(c, {"SP1", "SP2", "SP3"}, QStringLiteral("D_a"));
+    const auto heldOut = test::driftDataset(c, {"SP4"}, QStringLiteral("D_a"));
+    AutoModel model;
+    const FitSummary fit = model.fit(train);
+    ASSERT_TRUE(fit.success) << qPrintable(fit.message);
+    const QStringList families = model.chosen().split(QStringLiteral(" + "));
+    ASSERT_GE(families.size(), 2) << qPrintable(fit.notes.front());
+    EXPECT_TRUE(fit.notes.front().startsWith(QStringLiteral("auto chose ") + model.chosen() +
+                                             QStringLiteral(" (their mean")))
+        << qPrintable(fit.notes.front());
+    // The prediction is the mean of each family fitted alone on the same runs,
+    // and each family's parameters are there under its name.
+    Eigen::VectorXd mean = Eigen::VectorXd::Zero(Eigen::Index(heldOut.front().observations.size()));
+    for (const QString& family : families) {
+        const auto alone = makeModel(family);
+        ASSERT_TRUE(alone->fit(train).success) << qPrintable(family);
+        const Prediction p = alone->predict(heldOut.front());
+        ASSERT_TRUE(p.ok()) << qPrintable(p.error);
+        mean += Eigen::Map<const Eigen::VectorXd>(p.error_um.data(), mean.size()) /
+                double(families.size());
+        EXPECT_TRUE(std::any_of(fit.parameters.begin(), fit.parameters.end(), [&](const auto& kv) {
+            return kv.first.startsWith(family + QLatin1Char('/'));
+        })) << qPrintable(family);
+    }
+    const Prediction p = model.predict(heldOut.front());
+    ASSERT_TRUE(p.ok()) << qPrintable(p.error);
+    for (Eigen::Index i = 0; i < mean.size(); ++i)
+        ASSERT_NEAR(p.error_um[std::size_t(i)], mean[i], 1e-9) << i;
 }
 
 // ---- auto against the least-squares baselines on the rig's spindle runs ----
