@@ -13,22 +13,6 @@ std::vector<models::ReadingResiduals> residualsOf(const models::HeatTransferMode
     return out;
 }
 
-/// The noise of a sensor's residual, K (median over the runs; NaN when the
-/// sensor has none). From the residual, not the reading: the nut sensor's
-/// reading jumps as the nut moves, which the model follows.
-double residualNoise_K(const std::vector<models::ReadingResiduals>& residuals,
-                       const QString& channel) {
-    std::vector<double> perRun;
-    for (const auto& r : residuals)
-        for (const auto& sensor : r.sensors)
-            if (sensor.channel_id == channel)
-                perRun.push_back(temperatureNoise_K(sensor.residual_K));
-    if (perRun.empty()) return NAN;
-    std::nth_element(perRun.begin(), perRun.begin() + std::ptrdiff_t(perRun.size() / 2),
-                     perRun.end());
-    return perRun[perRun.size() / 2];
-}
-
 double value(const Finding& f, std::size_t i) {
     return i < f.parameters.size() ? f.parameters[i].second.value : std::nan("");
 }

@@ -49,6 +49,16 @@ double temperatureNoise_K(const std::vector<double>& values) {
     return 1.4826 * median(absolute) / std::sqrt(6.0);
 }
 
+double residualNoise_K(const std::vector<models::ReadingResiduals>& residuals,
+                       const QString& channel) {
+    std::vector<double> perRun;
+    for (const auto& r : residuals)
+        for (const auto& sensor : r.sensors)
+            if (sensor.channel_id == channel)
+                perRun.push_back(temperatureNoise_K(sensor.residual_K));
+    return median(perRun);
+}
+
 QuantityResidual quantityResidual(const std::vector<models::ReadingResiduals>& residuals,
                                   const QString& channel) {
     QuantityResidual q;

@@ -21,6 +21,13 @@ double positioningNoise_um(const std::vector<models::RunData>& runs);
 /// variance 6σ², a smooth temperature none.
 double temperatureNoise_K(const std::vector<double>& values);
 
+/// Noise of a sensor's residual, K: temperatureNoise_K of the residual, median
+/// over the runs; NaN when no run has the sensor. From the residual, not the
+/// reading: the nut sensor's reading jumps as the nut moves, which the model
+/// follows.
+double residualNoise_K(const std::vector<models::ReadingResiduals>& residuals,
+                       const QString& channel);
+
 struct ResidualSummary {
     double error_rms_um = 0, error_peak_um = 0;
     double temperature_rms_K = 0;  ///< over all screw sensors
