@@ -142,6 +142,7 @@ std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffec
     f.gain.test_rms_after = quantityResidual(test, channel).rms();
     f.gain.reduction =
         f.gain.test_rms_before > 0 ? 1 - f.gain.test_rms_after / f.gain.test_rms_before : 0;
+    f.gain.stretches = stretchSquares(base.test, test, channel);
     // BIC with the noise variance estimated, on the gain's quantity:
     // N·ln(S₀/S₁) − k·ln N for the k parameters the effect adds.
     const QuantityResidual before = quantityResidual(base.train, channel);

@@ -28,23 +28,6 @@ bool leavesOnlyNoise(const ResidualSummary& after, const ResidualSummary& before
     return positioning && after.worst_channel_rms_K <= temperatureAllowed;
 }
 
-/// Best held-out gain first; confidence from how clearly a finding beats the
-/// next one and how strong its evidence is.
-void rank(std::vector<Finding>& findings) {
-    std::sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) {
-        return a.gain.reduction > b.gain.reduction;
-    });
-    for (std::size_t i = 0; i < findings.size(); ++i) {
-        Finding& f = findings[i];
-        const double runnerUp =
-            i + 1 < findings.size() ? std::max(0.0, findings[i + 1].gain.reduction) : 0;
-        const double strength = 1 - std::exp(-std::max(0.0, f.bic_drop) / 20);
-        const double margin =
-            f.gain.reduction > 0 ? f.gain.reduction / (f.gain.reduction + runnerUp) : 0;
-        f.confidence = i == 0 ? strength * margin : strength * margin * 0.5;
-    }
-}
-
 /// Whether a significant effect on the axis also explains most of what the
 /// sensor effect `s` explains on its sensor: one physical cause that fits
 /// every reading beats an effect on one sensor that absorbs its share of the
@@ -59,6 +42,29 @@ bool explainedByPhysics(const Finding& s, const std::vector<Finding>& findings,
         if (reduction >= 0.8 * s.gain.reduction) return true;
     }
     return false;
+}
+
+/// Best held-out gain first. The confidence of each: the probability that
+/// its gain is real and larger than every other candidate's, on the held-out
+/// stretches (StretchJackknife). The chances of these failing are summed, so
+/// the confidence is a lower bound (Bonferroni) and needs no assumption on
+/// how the candidates' gains correlate. A sensor effect the physics explains
+/// on its sensor is no competitor: it is the same cause seen on one sensor.
+void rank(std::vector<Finding>& findings, const std::vector<models::ReadingResiduals>& before) {
+    std::sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) {
+        return a.gain.reduction > b.gain.reduction;
+    });
+    std::vector<bool> competes;
+    for (const Finding& f : findings)
+        competes.push_back(f.effect.channel.isEmpty() || !explainedByPhysics(f, findings, before));
+    for (std::size_t i = 0; i < findings.size(); ++i) {
+        const StretchSquares& own = findings[i].gain.stretches;
+        double doubt = 1 - probabilityLarger(own, nullptr);
+        for (std::size_t j = 0; j < findings.size(); ++j)
+            if (j != i && competes[j])
+                doubt += 1 - probabilityLarger(own, &findings[j].gain.stretches);
+        findings[i].confidence = std::max(0.0, 1 - doubt);
+    }
 }
 
 /// The significant finding with the largest gain, or nullptr.
@@ -105,7 +111,7 @@ std::vector<Finding> testCandidates(
     std::vector<Finding> findings;
     for (auto& f : scored)
         if (f) findings.push_back(std::move(*f));  // none: an extension the data cannot carry
-    rank(findings);
+    rank(findings, base.test);
     return findings;
 }
 

@@ -14,6 +14,7 @@
 
 #include "core/diagnosis/CandidateEffects.h"
 #include "core/diagnosis/ResidualStructure.h"
+#include "core/diagnosis/StretchJackknife.h"
 #include "core/domain/Campaign.h"
 #include "core/models/HeatTransferModel.h"
 
@@ -46,6 +47,8 @@ struct Gain {
     QString unit;      ///< "µm" or "K"
     double test_rms_before = 0, test_rms_after = 0;
     double reduction = 0;  ///< 1 − after/before
+    /// The quantity's sums of squares per stretch of the held-out runs.
+    StretchSquares stretches;
 };
 
 struct Finding {
@@ -55,6 +58,8 @@ struct Finding {
     CandidateEffect effect;
     /// The effect's own fitted parameters, in its order.
     std::vector<std::pair<QString, models::Parameter>> parameters;
+    /// The probability that the held-out gain is real and larger than every
+    /// other candidate's of the same step (see rank in Diagnosis.cpp).
     double confidence = 0;
     bool significant = false;
     double bic_drop = 0;  ///< on the training runs, of the gain's quantity

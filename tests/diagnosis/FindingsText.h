@@ -4,6 +4,7 @@
 // confusion matrix and the reliability of the confidence.
 #include <QString>
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <map>
 #include <utility>
@@ -57,25 +58,38 @@ inline std::vector<NamedCause> namedCauses(const diagnosis::DiagnosisResult& r,
     return named;
 }
 
-/// Of the causes named with a confidence in each band, how many and how many
-/// right; then the wrong ones.
-inline void printReliability(const char* title, const std::vector<NamedCause>& named) {
-    std::cout << "\n" << title << ": confidence band, causes named, right\n";
+/// A confidence that means something: over the causes named, its Brier score
+/// stays below this (a constant 0.7 on causes that are all right scores 0.09).
+constexpr double kMaxBrier = 0.05;
+
+/// Of the causes named with a confidence in each band, how many, how many
+/// right and their mean confidence (calibrated: the two agree); over all, the
+/// Brier score (mean squared difference of confidence and rightness); then
+/// the wrong ones. Returns the Brier score.
+inline double printReliability(const char* title, const std::vector<NamedCause>& named) {
+    std::cout << "\n" << title << ": confidence band, causes named, right, mean confidence\n";
     for (const auto& [lo, hi] :
          std::vector<std::pair<double, double>>{{0, 0.5}, {0.5, 0.7}, {0.7, 0.9}, {0.9, 1.01}}) {
         int n = 0, right = 0;
+        double sum = 0;
         for (const NamedCause& c : named)
             if (c.confidence >= lo && c.confidence < hi) {
                 ++n;
                 right += c.right();
+                sum += c.confidence;
             }
-        std::cout << "  [" << lo << ", " << std::min(hi, 1.0) << ")  " << n << "  " << right
-                  << "\n";
+        std::cout << "  [" << lo << ", " << std::min(hi, 1.0) << ")  " << n << "  " << right << "  "
+                  << (n ? sum / n : 0.0) << "\n";
     }
+    double brier = 0;
+    for (const NamedCause& c : named) brier += std::pow(c.confidence - c.right(), 2);
+    if (!named.empty()) brier /= double(named.size());
+    std::cout << "  Brier score " << brier << " over " << named.size() << " causes named\n";
     for (const NamedCause& c : named)
         if (!c.right())
             std::cout << "  wrong: " << qPrintable(c.cause) << " (confidence " << c.confidence
                       << "), hidden " << qPrintable(c.hidden) << "\n";
+    return brier;
 }
 
 }  // namespace driftlab::test

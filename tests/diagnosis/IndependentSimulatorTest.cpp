@@ -117,6 +117,8 @@ TEST(IndependentSimulator, diagnosisOnCampaignsItDidNotWrite) {
     std::cout << "correct: " << correct << " of " << cases.size() << "\n";
     std::vector<test::NamedCause> named;
     for (const Outcome& o : outcomes) named.insert(named.end(), o.named.begin(), o.named.end());
-    test::printReliability("reliability of the confidence, independent simulator", named);
+    EXPECT_LT(test::printReliability("reliability of the confidence, independent simulator", named),
+              test::kMaxBrier)
+        << "the confidences do not say how often the causes named are right";
     EXPECT_GE(double(correct), kIndependentFloor * double(cases.size()));
 }

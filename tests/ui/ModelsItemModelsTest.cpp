@@ -76,7 +76,7 @@ TEST(ModelsItemModels, findingsAndStoredDiagnosesModelsPassTheTester) {
     f.cause = QStringLiteral("forced_convection");
     f.parameters = {{QStringLiteral("dh_800rpm"), {3.5, 0.1, QStringLiteral("W/(m²·K)")}},
                     {QStringLiteral("m"), {1.4, 0.05, QString()}}};
-    f.gain = {QStringLiteral("positioning"), QStringLiteral("µm"), 3.0, 0.3, 0.9};
+    f.gain = {QStringLiteral("positioning"), QStringLiteral("µm"), 3.0, 0.3, 0.9, {}};
     f.evidence = QStringLiteral("convection grows with screw speed");
     diagnosis::Finding g = f;
     g.cause = QStringLiteral("motor_heat");

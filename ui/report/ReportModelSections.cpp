@@ -95,6 +95,10 @@ void addDiagnosis(ReportDocument& doc, const DiagnosisSection& s) {
                                  number(f.gain.test_rms_before, 3),
                                  number(f.gain.test_rms_after, 3), number(f.gain.reduction, 3)});
     doc.subheading(QStringLiteral("Findings: step 1, then step 2, each by held-out gain"));
+    doc.paragraph(QStringLiteral(
+        "Confidence: the probability that a candidate's held-out gain is real and larger than "
+        "every other candidate's of its step, from how the gain varies over stretches of the "
+        "held-out runs. A cause is named only when it also explains most of the residual."));
     doc.table(findings);
     for (std::size_t k = 0; k < r.base_residuals.size(); ++k) {
         const QString run = r.base_residuals[k].run_id;
