@@ -78,6 +78,7 @@ TEST(ModelsItemModels, findingsAndStoredDiagnosesModelsPassTheTester) {
                     {QStringLiteral("m"), {1.4, 0.05, QString()}}};
     f.gain = {QStringLiteral("positioning"), QStringLiteral("µm"), 3.0, 0.3, 0.9, {}};
     f.evidence = QStringLiteral("convection grows with screw speed");
+    f.confidence = 0.973;
     diagnosis::Finding g = f;
     g.cause = QStringLiteral("motor_heat");
     findings.setFindings({f, g}, QStringLiteral("forced_convection"));
@@ -85,6 +86,8 @@ TEST(ModelsItemModels, findingsAndStoredDiagnosesModelsPassTheTester) {
     EXPECT_TRUE(findings.index(0, 0).data(Qt::FontRole).value<QFont>().bold());
     EXPECT_FALSE(findings.index(1, 0).data(Qt::FontRole).value<QFont>().bold());
     EXPECT_EQ(findings.index(0, ui::FindingsModel::Gain).data().toString(), QStringLiteral("90.0"));
+    EXPECT_EQ(findings.index(0, ui::FindingsModel::Confidence).data().toString(),
+              QStringLiteral("0.97"));
     EXPECT_EQ(findings.index(0, ui::FindingsModel::RmsAfter).data().toString(),
               QStringLiteral("0.30 µm"));
     EXPECT_EQ(findings.index(0, ui::FindingsModel::Parameter).data().toString(),

@@ -48,6 +48,8 @@ QVariant FindingsModel::data(const QModelIndex& index, int role) const {
             return f.cause;
         case Significant:
             return f.significant ? tr("yes") : tr("no");
+        case Confidence:
+            return QString::number(f.confidence, 'f', 2);
         case Gain:
             return QString::number(100 * f.gain.reduction, 'f', 1);
         case RmsAfter:
@@ -66,12 +68,19 @@ QVariant FindingsModel::data(const QModelIndex& index, int role) const {
 }
 
 QVariant FindingsModel::headerData(int section, Qt::Orientation orientation, int role) const {
-    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
+    if (orientation != Qt::Horizontal) return {};
+    if (role == Qt::ToolTipRole && section == Confidence)
+        return tr(
+            "The probability that the held-out gain is real and larger than every other "
+            "candidate's of its step");
+    if (role != Qt::DisplayRole) return {};
     switch (section) {
         case Cause:
             return tr("Cause");
         case Significant:
             return tr("Significant");
+        case Confidence:
+            return tr("Confidence");
         case Gain:
             return tr("Held-out gain (%)");
         case RmsAfter:

@@ -13,7 +13,17 @@ namespace driftlab::ui {
 class FindingsModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { Cause, Significant, Gain, RmsAfter, BicDrop, Parameter, Evidence, ColumnCount };
+    enum Column {
+        Cause,
+        Significant,
+        Confidence,
+        Gain,
+        RmsAfter,
+        BicDrop,
+        Parameter,
+        Evidence,
+        ColumnCount
+    };
     explicit FindingsModel(QObject* parent = nullptr);
 
     /// `verdict`: the cause the diagnosis named (its row is bold).

@@ -191,10 +191,14 @@ void DiagnosisPage::show(const DiagnosisOutcome& outcome) {
     m_adoptedFinding.reset();
     const diagnosis::DiagnosisResult& r = m_outcome->result;
     const diagnosis::Finding* named = diagnosis::verdictFinding(r);
+    const diagnosis::Finding* first =
+        r.causes.isEmpty() ? nullptr : diagnosis::adoptedFinding(r, r.causes.front());
     m_verdict->setText(
-        tr("<b>Verdict: %1</b> — trained on %2, held out %3. Base model on the held-out runs: "
-           "%4 µm RMS (reading noise %5 µm).<br>%6")
-            .arg(r.verdict.toHtmlEscaped(), r.train_runs.join(','), r.test_runs.join(','))
+        tr("<b>Verdict: %1</b>%2 — trained on %3, held out %4. Base model on the held-out runs: "
+           "%5 µm RMS (reading noise %6 µm).<br>%7")
+            .arg(r.verdict.toHtmlEscaped(),
+                 first ? tr(" (confidence %1)").arg(first->confidence, 0, 'f', 2) : QString(),
+                 r.train_runs.join(','), r.test_runs.join(','))
             .arg(r.base_test.error_rms_um, 0, 'f', 2)
             .arg(r.base_test.error_noise_um, 0, 'f', 2)
             .arg((named
