@@ -82,11 +82,13 @@ void PreRunChecklist::check() {
     }
     auto* pending = new QListWidgetItem(tr("Devices: asking each for one reading…"), m_list);
     pending->setData(Qt::UserRole, QStringLiteral("pending"));
+    m_probing = true;
     m_probe.setFuture(QtConcurrent::run(
         [options = rigOptionsOf(setup)] { return engine::probeDevices(options, {}, 1.0); }));
 }
 
 void PreRunChecklist::probesDone() {
+    m_probing = false;
     for (int i = m_list->count() - 1; i >= 0; --i)
         if (m_list->item(i)->data(Qt::UserRole).toString() == QLatin1String("pending"))
             delete m_list->takeItem(i);

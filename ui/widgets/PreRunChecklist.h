@@ -24,7 +24,9 @@ public:
 
     /// Runs every check; the device probes finish later (checked()).
     void check();
-    bool busy() const { return m_probe.isRunning(); }
+    /// Until the probes' results are shown: the worker may have finished
+    /// while its finished() still waits in the GUI thread's event queue.
+    bool busy() const { return m_probing; }
     bool passed() const { return !busy() && m_problems.isEmpty() && m_checked; }
     /// What failed, one line each, naming the check.
     QStringList problems() const { return m_problems; }
@@ -43,6 +45,7 @@ private:
     QFutureWatcher<std::vector<engine::DeviceProbeResult>> m_probe;
     QStringList m_problems;
     bool m_checked = false;
+    bool m_probing = false;
 };
 
 }  // namespace driftlab::ui
