@@ -49,7 +49,8 @@ bool explainedByPhysics(const Finding& s, const std::vector<Finding>& findings,
 /// stretches (StretchJackknife). The chances of these failing are summed, so
 /// the confidence is a lower bound (Bonferroni) and needs no assumption on
 /// how the candidates' gains correlate. A sensor effect the physics explains
-/// on its sensor is no competitor: it is the same cause seen on one sensor.
+/// on its sensor is no competitor, and not a cause of its own (confidence 0):
+/// it is the same cause seen on one sensor.
 void rank(std::vector<Finding>& findings, const std::vector<models::ReadingResiduals>& before) {
     std::sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) {
         return a.gain.reduction > b.gain.reduction;
@@ -58,6 +59,7 @@ void rank(std::vector<Finding>& findings, const std::vector<models::ReadingResid
     for (const Finding& f : findings)
         competes.push_back(f.effect.channel.isEmpty() || !explainedByPhysics(f, findings, before));
     for (std::size_t i = 0; i < findings.size(); ++i) {
+        if (!competes[i]) continue;
         const StretchSquares& own = findings[i].gain.stretches;
         double doubt = 1 - probabilityLarger(own, nullptr);
         for (std::size_t j = 0; j < findings.size(); ++j)

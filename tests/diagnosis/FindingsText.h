@@ -1,7 +1,10 @@
 #pragma once
 // What the hidden-effect suites print: every candidate's figures in a
 // diagnosis, one indented line each (so that a wrong verdict shows why), the
-// confusion matrix and the reliability of the confidence.
+// confusion matrix and the reliability of the confidence, and what every
+// diagnosis of the suites must hold.
+#include <gtest/gtest.h>
+
 #include <QString>
 #include <algorithm>
 #include <cmath>
@@ -56,6 +59,17 @@ inline std::vector<NamedCause> namedCauses(const diagnosis::DiagnosisResult& r,
     for (const QString& cause : r.causes)
         named.push_back({cause, hidden, diagnosis::adoptedFinding(r, cause)->confidence});
     return named;
+}
+
+/// Each confidence of one step is the probability of an event that excludes
+/// the others' (this finding's gain is the largest): together at most 1.
+inline void expectExclusiveConfidences(const diagnosis::DiagnosisResult& r, const QString& name) {
+    for (int step : {1, 2}) {
+        double sum = 0;
+        for (const auto& f : r.findings)
+            if (f.step == step) sum += f.confidence;
+        EXPECT_LE(sum, 1 + 1e-9) << qPrintable(name) << ", step " << step;
+    }
 }
 
 /// A confidence that means something: over the causes named, its Brier score

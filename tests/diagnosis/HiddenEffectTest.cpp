@@ -127,6 +127,7 @@ Outcome run(const HiddenEffectCase& c) {
     if (c.tamper) c.tamper(campaign);
     const auto result = diagnosis::diagnose(campaign);
     if (!result.ok()) return {QStringLiteral("error"), expected, 0, result.error};
+    test::expectExclusiveConfidences(result, QString::fromStdString(c.name));
     const auto* named = result.causes.isEmpty()
                             ? nullptr
                             : diagnosis::adoptedFinding(result, result.causes.front());

@@ -58,6 +58,7 @@ Outcome diagnoseBundle(const QString& directory, const QString& expected) {
     if (!read.ok()) return {QStringLiteral("refused"), 0, read.error->toString()};
     const auto r = diagnosis::diagnose(*read.campaign);
     if (!r.ok()) return {QStringLiteral("error"), 0, r.error};
+    test::expectExclusiveConfidences(r, directory);
     const auto* named =
         r.causes.isEmpty() ? nullptr : diagnosis::adoptedFinding(r, r.causes.front());
     QString detail = r.verdict_evidence;
