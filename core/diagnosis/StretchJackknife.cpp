@@ -83,7 +83,6 @@ double probabilityLarger(const StretchSquares& a, const StretchSquares* b) {
             used.push_back(int(i));
     const double full = difference(-1);
     const double n = double(used.size());
-    if (used.size() < 2) return full > 0 ? 1.0 : full < 0 ? 0.0 : 0.5;
     std::vector<double> leftOut;
     double mean = 0;
     for (int k : used) {
@@ -93,7 +92,8 @@ double probabilityLarger(const StretchSquares& a, const StretchSquares* b) {
     double variance = 0;
     for (double d : leftOut) variance += (d - mean) * (d - mean);
     const double se = std::sqrt(variance * (n - 1) / n);
-    if (!(se > 0)) return full > 0 ? 1.0 : full < 0 ? 0.0 : 0.5;
+    // Fewer than two stretches, or no spread: the sign is all there is.
+    if (used.size() < 2 || !(se > 0)) return full > 0 ? 1.0 : full < 0 ? 0.0 : 0.5;
     return studentTCdf(full / se, n - 1);
 }
 

@@ -61,6 +61,11 @@ inline std::vector<NamedCause> namedCauses(const diagnosis::DiagnosisResult& r,
     return named;
 }
 
+/// The confidence of the verdict (the first cause named), 0 without one.
+inline double verdictConfidence(const std::vector<NamedCause>& named) {
+    return named.empty() ? 0.0 : named.front().confidence;
+}
+
 /// Each confidence of one step is the probability of an event that excludes
 /// the others' (this finding's gain is the largest): together at most 1.
 inline void expectExclusiveConfidences(const diagnosis::DiagnosisResult& r, const QString& name) {

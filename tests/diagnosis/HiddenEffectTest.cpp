@@ -67,7 +67,6 @@ QString resolveChannel(const QString& effect, const rig::RigChannelNames& n) {
 struct Outcome {
     QString verdict;
     QString expected;
-    double confidence = 0;
     QString detail;
     std::vector<test::NamedCause> named = {};
 };
@@ -107,7 +106,7 @@ Outcome run(const HiddenEffectCase& c) {
     for (const QString& e : c.effects) {
         QString error;
         const QString resolved = resolveChannel(e, spec.names);
-        if (!rig::applyEffect(spec.effects, resolved, &error)) return {error, expected, 0, error};
+        if (!rig::applyEffect(spec.effects, resolved, &error)) return {error, expected, error};
         if (expected.contains(QLatin1Char(':')))
             expected = resolved.section(QLatin1Char('='), 0, 0);
     }
@@ -126,12 +125,8 @@ Outcome run(const HiddenEffectCase& c) {
     Campaign campaign = rig::simulateCampaign(spec);
     if (c.tamper) c.tamper(campaign);
     const auto result = diagnosis::diagnose(campaign);
-    if (!result.ok()) return {QStringLiteral("error"), expected, 0, result.error};
+    if (!result.ok()) return {QStringLiteral("error"), expected, result.error};
     test::expectExclusiveConfidences(result, QString::fromStdString(c.name));
-    const auto* named = result.causes.isEmpty()
-                            ? nullptr
-                            : diagnosis::adoptedFinding(result, result.causes.front());
-    const double confidence = named ? named->confidence : 0;
     const QString verdict = c.effects.size() == 2 && result.causes.size() == 2
                                 ? result.causes.join(QLatin1Char('+'))
                                 : result.verdict;
@@ -141,7 +136,7 @@ Outcome run(const HiddenEffectCase& c) {
                       .arg(cause, diagnosis::adoptedFinding(result, cause)->evidence);
     if (!result.remaining.isEmpty()) detail += QStringLiteral("\n        ") + result.remaining;
     if (verdict != expected) detail += test::findingsText(result);  // to see why
-    return {verdict, expected, confidence, detail, test::namedCauses(result, expected)};
+    return {verdict, expected, detail, test::namedCauses(result, expected)};
 }
 
 std::vector<HiddenEffectCase> cases() {
@@ -272,7 +267,8 @@ TEST(HiddenEffects, diagnosisNamesTheHiddenCauseAndNothingOnCleanData) {
         confusion[row][column]++;
         std::cout << (ok ? "  ok    " : "  WRONG ") << all[i].name << " (expected "
                   << qPrintable(o.expected) << ") -> " << qPrintable(o.verdict) << " (confidence "
-                  << o.confidence << ")\n        " << qPrintable(o.detail) << "\n";
+                  << test::verdictConfidence(o.named) << ")\n        " << qPrintable(o.detail)
+                  << "\n";
         // Clean data never gets a named cause; an effect outside the library
         // never gets a confident wrong one.
         if (o.expected == QLatin1String("none") || o.expected == QLatin1String("unexplained")) {

@@ -33,7 +33,6 @@ struct Case {
 
 struct Outcome {
     QString verdict;  ///< as `expected` is written
-    double confidence = 0;
     QString detail;
     std::vector<test::NamedCause> named = {};
 };
@@ -55,20 +54,18 @@ std::vector<Case> manifest(const QDir& suite) {
 
 Outcome diagnoseBundle(const QString& directory, const QString& expected) {
     const BundleReadResult read = readBundle(directory);
-    if (!read.ok()) return {QStringLiteral("refused"), 0, read.error->toString()};
+    if (!read.ok()) return {QStringLiteral("refused"), read.error->toString()};
     const auto r = diagnosis::diagnose(*read.campaign);
-    if (!r.ok()) return {QStringLiteral("error"), 0, r.error};
+    if (!r.ok()) return {QStringLiteral("error"), r.error};
     test::expectExclusiveConfidences(r, directory);
-    const auto* named =
-        r.causes.isEmpty() ? nullptr : diagnosis::adoptedFinding(r, r.causes.front());
     QString detail = r.verdict_evidence;
     for (const QString& cause : r.causes)
         detail += QStringLiteral("\n        %1: %2")
                       .arg(cause, diagnosis::adoptedFinding(r, cause)->evidence);
     if (!r.remaining.isEmpty()) detail += QStringLiteral("\n        ") + r.remaining;
     detail += test::findingsText(r);
-    return {r.causes.size() > 1 ? r.causes.join(QLatin1Char('+')) : r.verdict,
-            named ? named->confidence : 0, detail, test::namedCauses(r, expected)};
+    return {r.causes.size() > 1 ? r.causes.join(QLatin1Char('+')) : r.verdict, detail,
+            test::namedCauses(r, expected)};
 }
 
 }  // namespace
@@ -104,7 +101,8 @@ TEST(IndependentSimulator, diagnosisOnCampaignsItDidNotWrite) {
         confusion[kind(expected)][kind(o.verdict)]++;
         std::cout << (ok ? "  ok    " : "  WRONG ") << qPrintable(cases[i].bundle) << ": expected "
                   << qPrintable(expected) << ", got " << qPrintable(o.verdict) << " (confidence "
-                  << o.confidence << ")\n        " << qPrintable(o.detail) << "\n";
+                  << test::verdictConfidence(o.named) << ")\n        " << qPrintable(o.detail)
+                  << "\n";
         EXPECT_NE(o.verdict, QStringLiteral("refused")) << qPrintable(cases[i].bundle);
         EXPECT_NE(o.verdict, QStringLiteral("error")) << qPrintable(cases[i].bundle);
         // Null data, and an effect outside the library, never get a named cause.
