@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <QDir>
-#include <cstdio>
 
 #include "core/bundle/BundleReader.h"
 #include "tests/models/LeastSquaresBaselines.h"
@@ -21,7 +20,7 @@ TEST(IndependentSpindle, autoAgainstLeastSquaresOnAllSixteenRisesAndTheBestPair)
     const QStringList campaigns = suite.entryList(QDir::Dirs | QDir::NoDotAndDotDot);
     ASSERT_FALSE(campaigns.isEmpty()) << "no campaign in " << qPrintable(suite.path());
     test::printAutoAgainstBaselinesHeader();
-    int beaten = 0, cases = 0;
+    test::AutoAgainstBaselinesTally tally;
     for (const QString& name : campaigns) {
         const BundleReadResult read = readBundle(suite.filePath(name));
         ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
@@ -36,8 +35,7 @@ TEST(IndependentSpindle, autoAgainstLeastSquaresOnAllSixteenRisesAndTheBestPair)
             const test::AutoAgainstBaselines a =
                 test::autoAgainstBaselines(train, test, name + QLatin1Char(' ') + probe.id);
             ASSERT_TRUE(a.score.ok());
-            ++cases;
-            beaten += a.beatsBoth();
+            tally.add(a);
             // Sixteen sensors around the heat paths follow the unsensed shaft
             // and column core nearly as a lag would: every model ends near the
             // probes' noise (0.15 µm), where three training runs rank them by
@@ -50,7 +48,7 @@ TEST(IndependentSpindle, autoAgainstLeastSquaresOnAllSixteenRisesAndTheBestPair)
         }
     }
     // Not asserted: beating both on every probe (see docs/models.md).
-    std::printf("auto beats both baselines on %d of %d\n", beaten, cases);
+    tally.print();
 }
 
 }  // namespace

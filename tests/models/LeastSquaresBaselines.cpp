@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -15,10 +16,33 @@ namespace {
 
 using namespace models;
 
+/// The measured drift and the residual of a model, summed in stretches of
+/// the held-out runs' time as the diagnosis sums its residuals.
+diagnosis::StretchSquares heldOutStretches(const std::vector<RunData>& test,
+                                           const Eigen::VectorXd& residual_um) {
+    constexpr int perRun = diagnosis::kStretchesPerRun;
+    diagnosis::StretchSquares s;
+    s.before.assign(test.size() * perRun, 0.0);
+    s.after.assign(test.size() * perRun, 0.0);
+    Eigen::Index at = 0;
+    for (std::size_t r = 0; r < test.size(); ++r) {
+        const Eigen::VectorXd measured = test[r].observedErrors();
+        const double first = test[r].observations.front().time_s;
+        const double width = (test[r].observations.back().time_s - first) / perRun;
+        for (Eigen::Index i = 0; i < measured.size(); ++i, ++at) {
+            const double t = test[r].observations[std::size_t(i)].time_s;
+            const int k = width > 0 ? std::clamp(int((t - first) / width), 0, perRun - 1) : 0;
+            s.before[r * perRun + k] += measured[i] * measured[i];
+            s.after[r * perRun + k] += residual_um[at] * residual_um[at];
+        }
+    }
+    return s;
+}
+
 /// Held-out RMS of least squares (with an offset) on the rises of `channels`.
-double leastSquaresHeldOut(const std::vector<models::RunData>& train,
-                           const std::vector<models::RunData>& test, const QStringList& channels,
-                           double* trainRss) {
+HeldOut leastSquaresHeldOut(const std::vector<models::RunData>& train,
+                            const std::vector<models::RunData>& test, const QStringList& channels,
+                            double* trainRss) {
     auto design = [&](const RunData& run) {
         const Eigen::MatrixXd rises = risesAt(run, channels, run.observationPoints());
         Eigen::MatrixXd X(rises.rows(), rises.cols() + 1);
@@ -30,7 +54,7 @@ double leastSquaresHeldOut(const std::vector<models::RunData>& train,
     if (trainRss) *trainRss = fit.rss;
     const Eigen::VectorXd r =
         stackRows(test, &RunData::observedErrors) - stackRows(test, design) * fit.coefficients;
-    return std::sqrt(r.squaredNorm() / double(r.size()));
+    return {std::sqrt(r.squaredNorm() / double(r.size())), heldOutStretches(test, r)};
 }
 
 }  // namespace
@@ -50,17 +74,17 @@ LeastSquaresBaselines leastSquaresBaselines(const std::vector<models::RunData>& 
     for (const TemperatureRise& t : train.front().temperatures)
         if (t.unusable.isEmpty()) sensors << t.channel_id;
     LeastSquaresBaselines b;
-    b.all_rises_um = leastSquaresHeldOut(train, test, sensors, nullptr);
+    b.all_rises = leastSquaresHeldOut(train, test, sensors, nullptr);
     // The pair a user would pick from the training runs: least training RSS.
     double bestPairRss = std::numeric_limits<double>::infinity();
     for (qsizetype i = 0; i < sensors.size(); ++i)
         for (qsizetype j = i + 1; j < sensors.size(); ++j) {
             double rss = 0;
-            const double heldOut = leastSquaresHeldOut(train, test, {sensors[i], sensors[j]}, &rss);
+            HeldOut heldOut = leastSquaresHeldOut(train, test, {sensors[i], sensors[j]}, &rss);
             if (rss < bestPairRss) {
                 bestPairRss = rss;
-                b.best_pair_um = heldOut;
-                b.best_pair = sensors[i] + QLatin1Char('+') + sensors[j];
+                b.best_pair = std::move(heldOut);
+                b.best_pair_sensors = sensors[i] + QLatin1Char('+') + sensors[j];
             }
         }
     return b;
@@ -78,14 +102,42 @@ AutoAgainstBaselines autoAgainstBaselines(const std::vector<models::RunData>& tr
     result.chosen = model.chosen();
     result.score = models::scoreModel(model, test);
     EXPECT_TRUE(result.score.ok()) << qPrintable(label) << ": " << qPrintable(result.score.error);
-    std::printf("%-14s %6.3f µm (%-12s) %6.3f µm  %6.3f µm (%s)\n", qPrintable(label),
-                result.score.rms_um, qPrintable(result.chosen), result.baselines.all_rises_um,
-                result.baselines.best_pair_um, qPrintable(result.baselines.best_pair));
+    if (!result.score.ok()) return result;
+    Eigen::VectorXd residual = stackRows(test, &RunData::observedErrors);
+    Eigen::Index at = 0;
+    for (const RunData& run : test) {
+        const Prediction p = model.predict(run);
+        for (double predicted : p.error_um) residual[at++] -= predicted;
+    }
+    const diagnosis::StretchSquares autoStretches = heldOutStretches(test, residual);
+    const LeastSquaresBaselines& b = result.baselines;
+    result.probability_better =
+        std::min(diagnosis::probabilityLarger(autoStretches, &b.all_rises.stretches),
+                 diagnosis::probabilityLarger(autoStretches, &b.best_pair.stretches));
+    std::printf("%-14s %6.3f µm (%-12s) %6.3f µm  %6.3f µm (%s)  %5.3f\n", qPrintable(label),
+                result.score.rms_um, qPrintable(result.chosen), b.all_rises.rms_um,
+                b.best_pair.rms_um, qPrintable(b.best_pair_sensors), result.probability_better);
     return result;
 }
 
 void printAutoAgainstBaselinesHeader() {
-    std::printf("held out       auto (chosen)          all rises  best pair (on training)\n");
+    std::printf(
+        "held out       auto (chosen)          all rises  best pair (on training)  "
+        "P(auto better than both)\n");
+}
+
+void AutoAgainstBaselinesTally::add(const AutoAgainstBaselines& a) {
+    ++cases;
+    beaten += a.beatsBoth();
+    surely_better += a.probability_better > 0.95;
+    surely_worse += a.probability_better < 0.05;
+}
+
+void AutoAgainstBaselinesTally::print() const {
+    std::printf(
+        "auto beats both baselines on %d of %d; surely (P > 0.95) on %d; a baseline surely "
+        "better on %d\n",
+        beaten, cases, surely_better, surely_worse);
 }
 
 }  // namespace driftlab::test

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/diagnosis/StretchJackknife.h"
 #include "core/models/ModelScore.h"
 #include "core/models/ThermalErrorData.h"
 
@@ -17,11 +18,18 @@ namespace driftlab::test {
 std::vector<models::RunData> driftDataset(const Campaign& c, const QStringList& runs,
                                           const QString& target);
 
+/// A baseline's held-out RMS, and its squares summed per stretch of the
+/// held-out runs (the drift's before, the residual's after).
+struct HeldOut {
+    double rms_um = 0;
+    diagnosis::StretchSquares stretches;
+};
+
 struct LeastSquaresBaselines {
-    double all_rises_um = 0;  ///< held-out RMS, every usable temperature rise and an offset
-    double best_pair_um = 0;  ///< held-out RMS of the pair with the least training RSS
-    QString best_pair;        ///< "A+B"
-    double better_um() const { return std::min(all_rises_um, best_pair_um); }
+    HeldOut all_rises;          ///< every usable temperature rise and an offset
+    HeldOut best_pair;          ///< the pair with the least training RSS
+    QString best_pair_sensors;  ///< "A+B"
+    double better_um() const { return std::min(all_rises.rms_um, best_pair.rms_um); }
 };
 
 /// Both baselines fitted on `train` and scored on `test`; the sensors are the
@@ -34,6 +42,10 @@ struct AutoAgainstBaselines {
     models::Score score;  ///< `auto`'s held-out score (error set when it failed)
     QString chosen;       ///< the family `auto` chose
     LeastSquaresBaselines baselines;
+    /// The probability that `auto`'s held-out RMS is below each baseline's
+    /// (the smaller of the two): the diagnosis's jackknife over stretches of
+    /// the held-out runs, since a drift residual is smooth for many minutes.
+    double probability_better = 0;
     bool beatsBoth() const { return score.rms_um < baselines.better_um(); }
 };
 
@@ -43,5 +55,13 @@ AutoAgainstBaselines autoAgainstBaselines(const std::vector<models::RunData>& tr
                                           const std::vector<models::RunData>& test,
                                           const QString& label);
 void printAutoAgainstBaselinesHeader();
+
+/// How often `auto` beats both baselines, and how often the held-out
+/// difference is beyond chance (P > 0.95 either way).
+struct AutoAgainstBaselinesTally {
+    int cases = 0, beaten = 0, surely_better = 0, surely_worse = 0;
+    void add(const AutoAgainstBaselines& a);
+    void print() const;
+};
 
 }  // namespace driftlab::test
