@@ -4,18 +4,10 @@
 #include <QSqlError>
 #include <QSqlQuery>
 
+#include "db/SqlValues.h"
 #include "db/StoreBackend.h"
 
 namespace driftlab::db {
-namespace {
-
-/// Qt binds a null QString as SQL NULL; these columns hold '' when empty.
-QString text(const QString& value) {
-    return value.isNull() ? QStringLiteral("") : value;
-}
-
-}  // namespace
-
 std::optional<qint64> storePush(CampaignStore& store, const PushRecord& push, QString* error) {
     QSqlQuery q(store.database());
     q.prepare(QStringLiteral(

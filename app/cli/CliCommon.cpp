@@ -279,4 +279,8 @@ double median(std::vector<double> values) {
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
+QString umText(double value_um) {
+    return std::isfinite(value_um) ? QString::number(value_um, 'f', 3) : QStringLiteral("n/a");
+}
+
 }  // namespace driftlab::cli

@@ -20,7 +20,7 @@ using namespace driftlab::compensation;
 const QStringList kFormats = tableFormats()
                              << QStringLiteral("sinumerik-temp") << QStringLiteral("isg-temp");
 
-QString um(double value) {
+QString umWithUnit(double value) {
     return std::isfinite(value) ? QString::number(value, 'f', 3) + QStringLiteral(" µm")
                                 : QStringLiteral("n/a");
 }
@@ -211,8 +211,9 @@ int compensateCommand(const QStringList& args) {
                                            : QStringLiteral("unidirectional")));
     printLine(QStringLiteral("max |correction|: %1 (correction = −deviation, added to the "
                              "commanded position)")
-                  .arg(um(table.maxAbsCorrectionUm())));
-    printLine(QStringLiteral("backlash: mean reversal B̄ = %1").arg(um(table.mean_reversal_um)));
+                  .arg(umWithUnit(table.maxAbsCorrectionUm())));
+    printLine(
+        QStringLiteral("backlash: mean reversal B̄ = %1").arg(umWithUnit(table.mean_reversal_um)));
     if (pushed) printPush(*plan, *pushed);
     failIfNotApplied();
     return 0;

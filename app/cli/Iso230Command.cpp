@@ -42,10 +42,6 @@ std::vector<iso::Reading> readCsv(const QString& path) {
     return readings;
 }
 
-QString um(double value) {
-    return std::isfinite(value) ? QString::number(value, 'f', 3) : QStringLiteral("n/a");
-}
-
 void printEvaluation(const iso::Evaluation& e, const QString& source) {
     const double k = e.settings.coverage_factor;
     printLine(QStringLiteral("%1 evaluation of %2: %3 targets, %4 cycles")
@@ -64,7 +60,7 @@ void printEvaluation(const iso::Evaluation& e, const QString& source) {
         QString line = QStringLiteral("%1").arg(t.target_mm, 10, 'f', 3);
         for (double v : {t.mean_up_um, t.mean_down_um, t.s_up_um, t.s_down_um, t.reversal_um,
                          t.r_up_um, t.r_down_um, t.r_um})
-            line += QStringLiteral("%1").arg(um(v), 11);
+            line += QStringLiteral("%1").arg(umText(v), 11);
         printLine(line);
     }
     const iso::AxisResult& a = e.axis;
@@ -87,7 +83,7 @@ void printEvaluation(const iso::Evaluation& e, const QString& source) {
     printLine(QStringLiteral("axis (%1, k = %2):").arg(iso::toString(e.settings.edition)).arg(k));
     for (const auto& [label, value] : rows)
         printLine(QStringLiteral("  ") + QString::fromUtf8(label) +
-                  QStringLiteral("%1 µm").arg(um(value), 9));
+                  QStringLiteral("%1 µm").arg(umText(value), 9));
     for (const QString& why : e.skipped) printLine(QStringLiteral("not determined: ") + why);
 }
 

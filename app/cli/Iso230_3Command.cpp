@@ -42,9 +42,6 @@ std::vector<const Run*> chooseRuns(const Campaign& campaign, const QString& want
     return runs;
 }
 
-QString um(double value) {
-    return std::isfinite(value) ? QString::number(value, 'f', 3) : QStringLiteral("n/a");
-}
 QString stabilisedText(const iso::DriftSeries& s) {
     return s.stabilised() ? QStringLiteral("%1 s").arg(s.stabilised_time_s)
                           : QStringLiteral("not stabilised");
@@ -136,10 +133,10 @@ QJsonObject probesJson(const iso::ProbeDriftEvaluation& e) {
 
 QString row(const QString& head, const iso::DriftSeries& s) {
     return head + QStringLiteral("%1%2%3%4  %5")
-                      .arg(um(s.max_drift_um), 14)
+                      .arg(umText(s.max_drift_um), 14)
                       .arg(s.max_drift_time_s, 11)
-                      .arg(um(s.range_um), 10)
-                      .arg(um(s.final_drift_um), 10)
+                      .arg(umText(s.range_um), 10)
+                      .arg(umText(s.final_drift_um), 10)
                       .arg(stabilisedText(s));
 }
 
@@ -163,7 +160,7 @@ void printAxis(const iso::AxisDriftEvaluation& e, const QString& label) {
                       t.drift));
     const iso::TargetDrift& max = e.targets[std::size_t(e.max_index)];
     printLine(QStringLiteral("axis: max drift %1 µm at %2 mm '%3', t = %4 s; %5")
-                  .arg(um(e.max_drift_um))
+                  .arg(umText(e.max_drift_um))
                   .arg(max.target_mm)
                   .arg(sign(max.direction))
                   .arg(max.drift.max_drift_time_s)
@@ -172,7 +169,8 @@ void printAxis(const iso::AxisDriftEvaluation& e, const QString& label) {
         QStringList parts;
         for (Direction d : {Direction::Positive, Direction::Negative})
             if (const iso::TargetDrift* t = e.find(at_mm, d))
-                parts << QStringLiteral("'%1' max %2 µm").arg(sign(d), um(t->drift.max_drift_um));
+                parts
+                    << QStringLiteral("'%1' max %2 µm").arg(sign(d), umText(t->drift.max_drift_um));
         printLine(QStringLiteral("%1 (%2 mm): %3")
                       .arg(at_mm == e.zero_mm ? QStringLiteral("zero") : QStringLiteral("far end"))
                       .arg(at_mm)
@@ -194,7 +192,7 @@ void printProbes(const iso::ProbeDriftEvaluation& e, const QString& label) {
         printLine(
             row(QStringLiteral(" tilt %1 (%2−%3)").arg(t.name, t.to, t.from).leftJustified(18),
                 t.drift) +
-            QStringLiteral("; max %1 µrad").arg(um(t.max_tilt_urad)));
+            QStringLiteral("; max %1 µrad").arg(umText(t.max_tilt_urad)));
     printLine(QStringLiteral("run: %1").arg(overall(e.stabilised_time_s)));
     for (const QString& note : e.notes) printLine(QStringLiteral("note: ") + note);
 }

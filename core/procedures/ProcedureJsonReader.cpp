@@ -10,7 +10,8 @@ QString numberText(double value) {
     return QString::number(value, 'g', 12);
 }
 
-QString rangeText(const RangeMm& r) {
+/// A range as the procedure file writes it (an array), for its errors.
+QString jsonRangeText(const RangeMm& r) {
     return QStringLiteral("[%1, %2] mm").arg(numberText(r.from_mm), numberText(r.to_mm));
 }
 
@@ -123,10 +124,10 @@ void ObjectReader::range(const QString& key, RangeMm& value, const RangeMm* with
         value = {a[0].toDouble(), a[1].toDouble()};
     }
     if (!(value.to_mm > value.from_mm))
-        fail(key, QStringLiteral("'to' must be above 'from', got %1").arg(rangeText(value)));
+        fail(key, QStringLiteral("'to' must be above 'from', got %1").arg(jsonRangeText(value)));
     if (within && (value.from_mm < within->from_mm || value.to_mm > within->to_mm))
         fail(key, QStringLiteral("%1 is outside the travel %2 (procedure.travel_mm)")
-                      .arg(rangeText(value), rangeText(*within)));
+                      .arg(jsonRangeText(value), jsonRangeText(*within)));
 }
 
 void ObjectReader::choice(const QString& key, int& index, const QStringList& choices,

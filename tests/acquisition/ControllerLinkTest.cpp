@@ -9,26 +9,15 @@
 #include "acquisition/devices/ControllerLink.h"
 #include "acquisition/sim/SimulatedController.h"
 #include "tests/acquisition/DevicePeer.h"
+#include "tests/acquisition/DeviceSignals.h"
 
 using namespace driftlab;
 using namespace driftlab::devices;
 
 namespace {
 
-constexpr int kEventWaitMs = 20'000;
-
-modbus::ModbusUrl local(int port) {
-    return {QStringLiteral("127.0.0.1"), port, 1};
-}
-
-bool waitFor(QSignalSpy& spy, int count) {
-    while (spy.count() < count)
-        if (!spy.wait(kEventWaitMs)) return spy.count() >= count;
-    return true;
-}
-
 std::optional<ControllerReading> readOnce(int port, QString* error) {
-    ControllerLink link(local(port));
+    ControllerLink link(test::localPeer(port));
     if (!link.connect(error)) return std::nullopt;
     auto reading = link.read(error);
     EXPECT_EQ(link.requests(), 1);  // registers 0…13 in one request
@@ -108,7 +97,7 @@ TEST(ControllerLinkSim, aDeviceThatIsNotTheMapIsRefusedNamingTheRegisters) {
     int port = 0;
     auto peer = test::startTemperaturePeer(0, &port);
     ASSERT_GT(port, 0);
-    ControllerLink link(local(port));
+    ControllerLink link(test::localPeer(port));
     QString error;
     ASSERT_TRUE(link.connect(&error)) << qPrintable(error);
     EXPECT_FALSE(link.read(&error));
@@ -151,26 +140,26 @@ TEST(ControllerDevice, peerKilledMidRun_oneErrorAGapAndReconnect) {
     options.poll_interval_s = 0.05;
     options.backoff_initial_s = 0.05;
     options.backoff_max_s = 0.4;
-    ControllerDevice device(local(port), options);
+    ControllerDevice device(test::localPeer(port), options);
     QSignalSpy readings(&device, &ControllerDevice::readingReady);
     QSignalSpy errors(&device, &ControllerDevice::errorOccurred);
     QSignalSpy gaps(&device, &ControllerDevice::gap);
     QSignalSpy attempts(&device, &ControllerDevice::attemptFailed);
     device.start();
-    ASSERT_TRUE(waitFor(readings, 3));
+    ASSERT_TRUE(test::waitFor(readings, 3));
     EXPECT_EQ(errors.count(), 0);
 
     test::killPeer(*peer);
-    ASSERT_TRUE(waitFor(errors, 1));
-    ASSERT_TRUE(waitFor(attempts, 4));
+    ASSERT_TRUE(test::waitFor(errors, 1));
+    ASSERT_TRUE(test::waitFor(attempts, 4));
     EXPECT_EQ(errors.count(), 1) << qPrintable(errors.last().at(0).toString());
     const int before = int(readings.count());
 
     int same_port = 0;
     auto second = test::startControllerPeer(port, &same_port, axis);
     ASSERT_EQ(same_port, port);
-    ASSERT_TRUE(waitFor(gaps, 1));
-    ASSERT_TRUE(waitFor(readings, before + 3));
+    ASSERT_TRUE(test::waitFor(gaps, 1));
+    ASSERT_TRUE(test::waitFor(readings, before + 3));
     EXPECT_EQ(errors.count(), 1);
     EXPECT_EQ(gaps.count(), 1);
     const auto last_before = readings.at(before - 1).at(0).value<ControllerReading>();

@@ -10,7 +10,25 @@
 #include <QProcess>
 #include <memory>
 
+#include "acquisition/devices/ChannelRegisterMap.h"
+#include "acquisition/modbus/ModbusUrl.h"
+
 namespace driftlab::test {
+
+/// The temperature peer's register profile, as a user installs it.
+inline devices::ChannelRegisterMap temperatureProfile() {
+    QString error;
+    auto map = devices::loadChannelRegisterMap(
+        QStringLiteral(DRIFTLAB_SOURCE_DIR "/resources/devices/temperature-8ch-pt100.json"),
+        &error);
+    EXPECT_TRUE(map) << qPrintable(error);
+    return map.value_or(devices::ChannelRegisterMap{});
+}
+
+/// A Modbus TCP peer on this host, unit 1.
+inline modbus::ModbusUrl localPeer(int port) {
+    return {QStringLiteral("127.0.0.1"), port, 1};
+}
 
 inline const QString kPeerPython = QStringLiteral("/usr/bin/python3");
 

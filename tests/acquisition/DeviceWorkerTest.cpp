@@ -12,22 +12,12 @@
 
 #include "acquisition/devices/TemperatureDevice.h"
 #include "tests/acquisition/DevicePeer.h"
+#include "tests/acquisition/DeviceSignals.h"
 
 using namespace driftlab;
 using namespace driftlab::devices;
 
 namespace {
-
-constexpr int kEventWaitMs = 20'000;
-
-ChannelRegisterMap profile() {
-    QString error;
-    auto map = loadChannelRegisterMap(
-        QStringLiteral(DRIFTLAB_SOURCE_DIR "/resources/devices/temperature-8ch-pt100.json"),
-        &error);
-    EXPECT_TRUE(map) << qPrintable(error);
-    return map.value_or(ChannelRegisterMap{});
-}
 
 DeviceWorkerOptions quickOptions() {
     DeviceWorkerOptions options;
@@ -35,13 +25,6 @@ DeviceWorkerOptions quickOptions() {
     options.backoff_initial_s = 0.05;
     options.backoff_max_s = 0.4;
     return options;
-}
-
-/// Waits (bounded) until `spy` has at least `count` signals.
-bool waitFor(QSignalSpy& spy, int count) {
-    while (spy.count() < count)
-        if (!spy.wait(kEventWaitMs)) return spy.count() >= count;
-    return true;
 }
 
 /// A port nothing listens on: bound by the system, then released.
@@ -75,21 +58,22 @@ TEST(DeviceWorker, peerKilledMidRun_oneErrorReconnectOnNewPeerAndGapCoversOutage
     auto peer = test::startTemperaturePeer(0, &port);
     ASSERT_GT(port, 0);
 
-    TemperatureDevice device(profile(), {QStringLiteral("127.0.0.1"), port, 1}, quickOptions());
+    TemperatureDevice device(test::temperatureProfile(), {QStringLiteral("127.0.0.1"), port, 1},
+                             quickOptions());
     QSignalSpy readings(&device, &TemperatureDevice::readingReady);
     QSignalSpy errors(&device, &TemperatureDevice::errorOccurred);
     QSignalSpy gaps(&device, &TemperatureDevice::gap);
     QSignalSpy attempts(&device, &TemperatureDevice::attemptFailed);
     QSignalSpy health(&device, &TemperatureDevice::healthChanged);
     device.start();
-    ASSERT_TRUE(waitFor(readings, 3));
+    ASSERT_TRUE(test::waitFor(readings, 3));
     EXPECT_EQ(errors.count(), 0);
 
     peer->kill();  // SIGKILL: no goodbye on the connection
     peer->waitForFinished();
-    ASSERT_TRUE(waitFor(errors, 1));
+    ASSERT_TRUE(test::waitFor(errors, 1));
     // Several failed attempts in the one cycle, still one error.
-    ASSERT_TRUE(waitFor(attempts, 4));
+    ASSERT_TRUE(test::waitFor(attempts, 4));
     EXPECT_EQ(errors.count(), 1) << qPrintable(errors.last().at(0).toString());
     const int readings_before = int(readings.count());
 
@@ -97,8 +81,8 @@ TEST(DeviceWorker, peerKilledMidRun_oneErrorReconnectOnNewPeerAndGapCoversOutage
     int same_port = 0;
     auto second = test::startTemperaturePeer(port, &same_port);
     ASSERT_EQ(same_port, port);
-    ASSERT_TRUE(waitFor(gaps, 1));
-    ASSERT_TRUE(waitFor(readings, readings_before + 3));
+    ASSERT_TRUE(test::waitFor(gaps, 1));
+    ASSERT_TRUE(test::waitFor(readings, readings_before + 3));
     EXPECT_EQ(errors.count(), 1);
     EXPECT_EQ(gaps.count(), 1);
 
@@ -135,7 +119,8 @@ TEST(DeviceWorker, nothingListening_oneErrorThenFailedAfterMaxAttempts) {
     DeviceWorkerOptions options = quickOptions();
     options.max_attempts = 5;
     options.backoff_max_s = 0.2;
-    TemperatureDevice device(profile(), {QStringLiteral("127.0.0.1"), closedPort(), 1}, options);
+    TemperatureDevice device(test::temperatureProfile(),
+                             {QStringLiteral("127.0.0.1"), closedPort(), 1}, options);
     QSignalSpy errors(&device, &TemperatureDevice::errorOccurred);
     QSignalSpy attempts(&device, &TemperatureDevice::attemptFailed);
     QSignalSpy health(&device, &TemperatureDevice::healthChanged);
@@ -143,7 +128,7 @@ TEST(DeviceWorker, nothingListening_oneErrorThenFailedAfterMaxAttempts) {
     device.start();
     // Failed is the last state the worker reaches on its own.
     while (health.isEmpty() || health.last().at(0).value<DeviceHealth>() != DeviceHealth::Failed)
-        ASSERT_TRUE(health.wait(kEventWaitMs));
+        ASSERT_TRUE(health.wait(test::kEventWaitMs));
     EXPECT_EQ(errors.count(), 1);
     EXPECT_TRUE(errors.at(0).at(0).toString().contains(QStringLiteral("cannot connect")));
     ASSERT_EQ(attempts.count(), 5);
@@ -161,16 +146,17 @@ TEST(DeviceWorker, destroyedWhileRetrying_stopsWithinTheBound) {
     test::ensureCoreApplication();
     DeviceWorkerOptions options = quickOptions();
     options.backoff_initial_s = 5;  // the worker sits in a long backoff timer
-    TemperatureDevice device(profile(), {QStringLiteral("127.0.0.1"), closedPort(), 1}, options);
+    TemperatureDevice device(test::temperatureProfile(),
+                             {QStringLiteral("127.0.0.1"), closedPort(), 1}, options);
     QSignalSpy attempts(&device, &TemperatureDevice::attemptFailed);
     device.start();
-    ASSERT_TRUE(waitFor(attempts, 1));
+    ASSERT_TRUE(test::waitFor(attempts, 1));
     // The stop does not wait out the 5 s backoff: quit ends the timer's loop.
     EXPECT_TRUE(device.stopAndWait(4000));
     EXPECT_FALSE(device.isRunning());
     // The worker's last word, delivered through the queue.
     QSignalSpy health(&device, &TemperatureDevice::healthChanged);
-    ASSERT_TRUE(health.wait(kEventWaitMs));
+    ASSERT_TRUE(health.wait(test::kEventWaitMs));
     EXPECT_EQ(health.last().at(0).value<DeviceHealth>(), DeviceHealth::Stopped);
     device.start();  // a stopped device stays stopped (its worker is gone)
     EXPECT_FALSE(device.isRunning());

@@ -16,13 +16,12 @@
 #include "acquisition/modbus/Crc16Modbus.h"
 #include "acquisition/modbus/ModbusLink.h"
 #include "tests/acquisition/DevicePeer.h"
+#include "tests/acquisition/DeviceSignals.h"
 
 using namespace driftlab;
 using namespace driftlab::devices;
 
 namespace {
-
-constexpr int kEventWaitMs = 20'000;
 
 modbus::ModbusUrl rtuUrl(const QString& device) {
     QString error;
@@ -31,21 +30,6 @@ modbus::ModbusUrl rtuUrl(const QString& device) {
         &error);
     EXPECT_TRUE(url) << qPrintable(error);
     return url.value_or(modbus::ModbusUrl{});
-}
-
-ChannelRegisterMap profile() {
-    QString error;
-    auto map = loadChannelRegisterMap(
-        QStringLiteral(DRIFTLAB_SOURCE_DIR "/resources/devices/temperature-8ch-pt100.json"),
-        &error);
-    EXPECT_TRUE(map) << qPrintable(error);
-    return map.value_or(ChannelRegisterMap{});
-}
-
-bool waitFor(QSignalSpy& spy, int count) {
-    while (spy.count() < count)
-        if (!spy.wait(kEventWaitMs)) return spy.count() >= count;
-    return true;
 }
 
 QString parseError(const char* text) {
@@ -103,7 +87,7 @@ TEST(ModbusRtuPeer, eightChannelsReadOverRtuWithScaleAndOpenShortCodes) {
         GTEST_SKIP() << qPrintable(why);
     test::PtyBridge bridge = test::startPtyBridge();
     auto peer = test::startRtuTemperaturePeer(bridge.peers);
-    TemperatureModule module(profile(), rtuUrl(bridge.ours));
+    TemperatureModule module(test::temperatureProfile(), rtuUrl(bridge.ours));
     QString error;
     ASSERT_TRUE(module.connect(&error)) << qPrintable(error);
     const auto reading = module.read(&error);
@@ -180,18 +164,18 @@ TEST(ModbusRtuDevice, peerStoppedMidRun_oneTimeoutErrorAGapAndReconnect) {
     options.backoff_initial_s = 0.05;
     options.backoff_max_s = 0.4;
     options.response_timeout_s = 0.3;
-    TemperatureDevice device(profile(), rtuUrl(bridge.ours), options);
+    TemperatureDevice device(test::temperatureProfile(), rtuUrl(bridge.ours), options);
     QSignalSpy readings(&device, &TemperatureDevice::readingReady);
     QSignalSpy errors(&device, &TemperatureDevice::errorOccurred);
     QSignalSpy gaps(&device, &TemperatureDevice::gap);
     QSignalSpy attempts(&device, &TemperatureDevice::attemptFailed);
     device.start();
-    ASSERT_TRUE(waitFor(readings, 3));
+    ASSERT_TRUE(test::waitFor(readings, 3));
     EXPECT_EQ(errors.count(), 0);
 
     test::killPeer(*peer);  // the line stays; nobody answers on it
-    ASSERT_TRUE(waitFor(errors, 1));
-    ASSERT_TRUE(waitFor(attempts, 3));
+    ASSERT_TRUE(test::waitFor(errors, 1));
+    ASSERT_TRUE(test::waitFor(attempts, 3));
     EXPECT_EQ(errors.count(), 1);
     const QString message = errors.at(0).at(0).toString();
     EXPECT_TRUE(message.contains(bridge.ours)) << qPrintable(message);
@@ -199,8 +183,8 @@ TEST(ModbusRtuDevice, peerStoppedMidRun_oneTimeoutErrorAGapAndReconnect) {
     const int before = int(readings.count());
 
     auto second = test::startRtuTemperaturePeer(bridge.peers);
-    ASSERT_TRUE(waitFor(gaps, 1));
-    ASSERT_TRUE(waitFor(readings, before + 3));
+    ASSERT_TRUE(test::waitFor(gaps, 1));
+    ASSERT_TRUE(test::waitFor(readings, before + 3));
     EXPECT_EQ(errors.count(), 1);
     EXPECT_EQ(gaps.count(), 1);
     for (const auto& args : readings) {

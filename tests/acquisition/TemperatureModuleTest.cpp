@@ -11,14 +11,6 @@
 using namespace driftlab;
 using namespace driftlab::devices;
 
-namespace {
-
-modbus::ModbusUrl local(int port) {
-    return {QStringLiteral("127.0.0.1"), port, 1};
-}
-
-}  // namespace
-
 TEST(TemperatureModulePeer, profileChannelsReadInOneRequestWithScaleAndOpenShortCodes) {
     if (const QString why = test::peerUnavailable(); !why.isEmpty())
         GTEST_SKIP() << qPrintable(why);
@@ -31,7 +23,7 @@ TEST(TemperatureModulePeer, profileChannelsReadInOneRequestWithScaleAndOpenShort
         &error);
     ASSERT_TRUE(map) << qPrintable(error);
 
-    TemperatureModule module(*map, local(port));
+    TemperatureModule module(*map, test::localPeer(port));
     ASSERT_TRUE(module.connect(&error)) << qPrintable(error);
     const auto reading = module.read(&error);
     ASSERT_TRUE(reading) << qPrintable(error);
@@ -73,7 +65,7 @@ TEST(TemperatureModulePeer, thirtyTwoBitValuesInBothWordOrdersMatchThePeer) {
     ]})",
                                              &error);
     ASSERT_TRUE(map) << qPrintable(error);
-    TemperatureModule module(*map, local(port));
+    TemperatureModule module(*map, test::localPeer(port));
     ASSERT_TRUE(module.connect(&error)) << qPrintable(error);
     const auto reading = module.read(&error);
     ASSERT_TRUE(reading) << qPrintable(error);
@@ -102,7 +94,7 @@ TEST(TemperatureModulePeer, registersTheModuleLacksAreNotReadWhileOthersAre) {
     ]})",
                                              &error);
     ASSERT_TRUE(map) << qPrintable(error);
-    TemperatureModule module(*map, local(port));
+    TemperatureModule module(*map, test::localPeer(port));
     ASSERT_TRUE(module.connect(&error)) << qPrintable(error);
     const auto reading = module.read(&error);
     ASSERT_TRUE(reading) << qPrintable(error);

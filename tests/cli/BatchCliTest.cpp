@@ -84,6 +84,9 @@ void simulate(const QString& out, const QString& runs, int seed) {
     ASSERT_EQ(r.exitCode, 0) << r.err.constData();
 }
 
+}  // namespace
+
+// The fixture is outside the anonymous namespace: its tests derive from it.
 /// The lab folder every test reads, made once: two bundles (two moving
 /// states, and one state so that it has a default ISO 230-2 run), a zip of
 /// the first, a store with both imported and a bundle whose samples.csv was
@@ -125,8 +128,6 @@ protected:
 };
 
 std::unique_ptr<QTemporaryDir> BatchCli::s_dir;
-
-}  // namespace
 
 TEST_F(BatchCli, folderGivesEveryItemItsLineInInputOrderWithTheSingleCommandsResults) {
     const CliResult r =

@@ -2,6 +2,8 @@
 // Runs driftlab-cli as a user does: a real process, its exit code, stdout and stderr.
 #include <gtest/gtest.h>
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QStringList>
 #include <QTemporaryDir>
@@ -25,6 +27,11 @@ inline CliResult runCli(const QStringList& args, const QStringList& wrapper = {}
     EXPECT_TRUE(p.waitForFinished(300'000)) << "driftlab-cli " << qPrintable(args.join(' '));
     return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
             p.readAllStandardError()};
+}
+
+/// The JSON object a command printed on stdout (empty when it printed none).
+inline QJsonObject json(const CliResult& r) {
+    return QJsonDocument::fromJson(r.out).object();
 }
 
 /// The last line on stderr, where the one-line reason of a failure stands.

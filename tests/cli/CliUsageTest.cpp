@@ -20,10 +20,6 @@ const QStringList kBuilt{"import",  "export",         "info",     "simulate", "f
                          "pushes",  "controller-sim", "live",     "iso230-3", "health",
                          "run",     "report",         "batch",    "sync"};
 
-QJsonObject json(const CliResult& r) {
-    return QJsonDocument::fromJson(r.out).object();
-}
-
 /// The usage a refused command line shows on stderr before its reason.
 QByteArray usage() {
     return runCli({QStringLiteral("--help")}).out;

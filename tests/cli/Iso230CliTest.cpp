@@ -19,10 +19,6 @@ namespace {
 
 const QString kGolden = QStringLiteral(DRIFTLAB_SOURCE_DIR "/tests/iso/data/golden_3x5.csv");
 
-QJsonObject json(const CliResult& r) {
-    return QJsonDocument::fromJson(r.out).object();
-}
-
 QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& content) {
     const QString path = dir.filePath(name);
     QFile file(path);

@@ -17,10 +17,6 @@ using namespace driftlab::test;
 
 namespace {
 
-QJsonObject json(const CliResult& r) {
-    return QJsonDocument::fromJson(r.out).object();
-}
-
 CliResult iso3(QStringList args) {
     return runCli(QStringList{QStringLiteral("iso230-3")} + args);
 }

@@ -29,10 +29,6 @@ const QString& simulatedBundle() {
     return bundle;
 }
 
-QJsonObject json(const CliResult& r) {
-    return QJsonDocument::fromJson(r.out).object();
-}
-
 }  // namespace
 
 TEST(ModelCli, fitJsonHasParametersWithSigmaAndTheHeldOutScore) {

@@ -20,10 +20,6 @@ using namespace driftlab::test;
 
 namespace {
 
-QJsonObject json(const CliResult& r) {
-    return QJsonDocument::fromJson(r.out).object();
-}
-
 /// The example campaign imported into dir/store.sqlite; returns its id.
 QString importExample(const QTemporaryDir& dir) {
     const CliResult r =

@@ -43,12 +43,6 @@ for path in glob.glob(sys.argv[1] + '/*.csv'):
     runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromLatin1(script), bundle});
 }
 
-Campaign exampleCampaign() {
-    BundleReadResult r = readBundle(exampleBundlePath());
-    EXPECT_TRUE(r.ok());
-    return *r.campaign;
-}
-
 /// Imports `bundle` into a new store and exports it again: what DriftLab stored.
 Campaign importedAndExported(const QString& bundle, const QDir& work, QByteArray* err = nullptr) {
     const QString db = work.filePath(QStringLiteral("lab.sqlite"));

@@ -6,10 +6,18 @@
 #include <QFile>
 #include <random>
 
+#include "core/bundle/BundleReader.h"
+
 namespace driftlab::test {
 
 QString exampleBundlePath() {
     return QStringLiteral(DRIFTLAB_SOURCE_DIR "/resources/examples/x-axis-moving-state");
+}
+
+Campaign exampleCampaign() {
+    BundleReadResult r = readBundle(exampleBundlePath());
+    EXPECT_TRUE(r.ok());
+    return *r.campaign;
 }
 
 void copyBundle(const QString& from, const QString& target) {

@@ -14,6 +14,8 @@ namespace driftlab::test {
 
 /// resources/examples/x-axis-moving-state in the source tree.
 QString exampleBundlePath();
+/// The example bundle as read (a test failure when it cannot be read).
+Campaign exampleCampaign();
 /// Copies a bundle folder into `target` (created).
 void copyBundle(const QString& from, const QString& target);
 QByteArray readFile(const QString& path);

@@ -16,12 +16,6 @@ using driftlab::db::CampaignStore;
 
 namespace {
 
-Campaign exampleCampaign() {
-    BundleReadResult r = readBundle(exampleBundlePath());
-    EXPECT_TRUE(r.ok());
-    return *r.campaign;
-}
-
 /// The store at `path` opened for writing; created (empty) first if missing.
 std::unique_ptr<CampaignStore> openStore(const QString& path) {
     QString error;

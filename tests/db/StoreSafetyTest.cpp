@@ -21,12 +21,6 @@ namespace {
 constexpr StoreAccess kEveryAccess[] = {StoreAccess::ReadOnly, StoreAccess::ReadWrite,
                                         StoreAccess::CreateIfMissing};
 
-Campaign exampleCampaign() {
-    BundleReadResult r = readBundle(exampleBundlePath());
-    EXPECT_TRUE(r.ok());
-    return *r.campaign;
-}
-
 /// A published store at `path` holding the example campaign (id 1).
 void writeExampleStore(const QString& path) {
     QString error;

@@ -13,7 +13,7 @@ using test::add;
 using test::golden3x5;
 using test::longAxisSingleApproach;
 
-constexpr double kExact = 1e-12;
+constexpr double kRoundOffUm = 1e-12;
 
 TEST(Iso230Validation, singleReadingOnShortAxisIsRefusedNamingTargetAndDirection) {
     std::vector<Reading> r = golden3x5();
@@ -61,13 +61,13 @@ TEST(Iso230Validation, longAxisWithOneApproachSkipsTheValuesThatNeedS) {
         << qPrintable(e.skipped.front());
     EXPECT_TRUE(e.skipped.front().contains(QStringLiteral("this travel is 2500 mm")));
     // Hand values (Iso230TestData.h, G2).
-    EXPECT_NEAR(e.axis.reversal_um, 2, kExact);
-    EXPECT_NEAR(e.axis.mean_reversal_um, 1, kExact);
-    EXPECT_NEAR(e.axis.e_up_um, 3, kExact);
-    EXPECT_NEAR(e.axis.e_down_um, 5, kExact);
-    EXPECT_NEAR(e.axis.e_um, 5, kExact);
-    EXPECT_NEAR(e.axis.m_um, 3.5, kExact);
-    EXPECT_NEAR(e.targets[1].reversal_um, -1, kExact);
+    EXPECT_NEAR(e.axis.reversal_um, 2, kRoundOffUm);
+    EXPECT_NEAR(e.axis.mean_reversal_um, 1, kRoundOffUm);
+    EXPECT_NEAR(e.axis.e_up_um, 3, kRoundOffUm);
+    EXPECT_NEAR(e.axis.e_down_um, 5, kRoundOffUm);
+    EXPECT_NEAR(e.axis.e_um, 5, kRoundOffUm);
+    EXPECT_NEAR(e.axis.m_um, 3.5, kRoundOffUm);
+    EXPECT_NEAR(e.targets[1].reversal_um, -1, kRoundOffUm);
     for (double skipped :
          {e.axis.r_um, e.axis.r_up_um, e.axis.r_down_um, e.axis.a_um, e.axis.a_up_um,
           e.axis.a_down_um, e.targets[0].s_up_um, e.targets[0].r_um})
@@ -85,7 +85,7 @@ TEST(Iso230Validation, driftFromCycleToCycleIsWarnedWithItsNumbers) {
             add(r, target, d, {0, 1, 2, 3, 4});
     const Evaluation e = evaluate(r);
     ASSERT_TRUE(e.ok()) << qPrintable(e.error);
-    EXPECT_NEAR(e.targets[0].s_up_um, std::sqrt(2.5), kExact);
+    EXPECT_NEAR(e.targets[0].s_up_um, std::sqrt(2.5), kRoundOffUm);
     ASSERT_EQ(e.warnings.size(), 1);
     EXPECT_EQ(e.warnings.front(),
               QStringLiteral("deviations drift from cycle to cycle: the per-cycle mean deviation "
@@ -122,7 +122,7 @@ TEST(Iso230Validation, stationaryScatterIsNotCalledDrift) {
     }
     const Evaluation e = evaluate(r);
     ASSERT_TRUE(e.ok()) << qPrintable(e.error);
-    EXPECT_NEAR(e.targets[0].s_up_um, 1, kExact);
+    EXPECT_NEAR(e.targets[0].s_up_um, 1, kRoundOffUm);
     EXPECT_TRUE(e.warnings.isEmpty()) << qPrintable(e.warnings.join('\n'));
 }
 
@@ -145,7 +145,7 @@ TEST(Iso230Validation, targetsWithinTheToleranceAreOneTarget) {
     const Evaluation e = evaluate(r);
     ASSERT_TRUE(e.ok()) << qPrintable(e.error);
     EXPECT_EQ(e.targets.size(), 3u);
-    EXPECT_NEAR(e.axis.r_um, 9, kExact);
+    EXPECT_NEAR(e.axis.r_um, 9, kRoundOffUm);
 }
 
 }  // namespace

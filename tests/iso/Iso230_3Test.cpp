@@ -14,7 +14,7 @@
 namespace driftlab::iso {
 namespace {
 
-constexpr double kExact = 1e-9;
+constexpr double kExactUm = 1e-9;
 constexpr auto kUp = Direction::Positive;
 constexpr auto kDown = Direction::Negative;
 
@@ -55,10 +55,10 @@ const std::vector<double> kBrief{0, 2, 5, 7, 8, 8.2, 8.3};
 TEST(Iso230_3Golden, briefTargetMaximumAndStabilisation) {
     DriftSeries s = series(kBrief);
     summarise(s, settings(600, 1));
-    EXPECT_NEAR(s.max_drift_um, 8.3, kExact);
+    EXPECT_NEAR(s.max_drift_um, 8.3, kExactUm);
     EXPECT_EQ(s.max_drift_time_s, 3600);
-    EXPECT_NEAR(s.range_um, 8.3, kExact);
-    EXPECT_NEAR(s.final_drift_um, 8.3, kExact);
+    EXPECT_NEAR(s.range_um, 8.3, kExactUm);
+    EXPECT_NEAR(s.final_drift_um, 8.3, kExactUm);
     EXPECT_EQ(s.stabilised_time_s, 2400);
     // W = 1200, D = 1: from 1800 the window holds 7, 8, 8.2 (1.2 ✗); from 2400
     // 8, 8.2, 8.3 (0.3 ✓), and 3600 − 2400 = 1200 ≥ W: 2400 s.
@@ -114,13 +114,13 @@ TEST(Iso230_3Golden, movingAxisBothDirectionsKeptApart) {
     const TargetDrift* down = e.find(100, kDown);
     ASSERT_TRUE(up && down);
     EXPECT_EQ(up->cycles, (std::vector<int>{0, 1, 2, 3, 4, 5, 6}));
-    EXPECT_NEAR(up->drift.drift_um[2], 5, kExact);
-    EXPECT_NEAR(up->drift.max_drift_um, 8.3, kExact);
+    EXPECT_NEAR(up->drift.drift_um[2], 5, kExactUm);
+    EXPECT_NEAR(up->drift.max_drift_um, 8.3, kExactUm);
     EXPECT_EQ(up->drift.max_drift_time_s, 3600);
     EXPECT_EQ(up->drift.stabilised_time_s, 2400);
-    EXPECT_NEAR(down->drift.max_drift_um, -4.6, kExact);
+    EXPECT_NEAR(down->drift.max_drift_um, -4.6, kExactUm);
     EXPECT_EQ(down->drift.max_drift_time_s, 3010);
-    EXPECT_NEAR(down->drift.range_um, 4.6, kExact);
+    EXPECT_NEAR(down->drift.range_um, 4.6, kExactUm);
     EXPECT_EQ(down->drift.stabilised_time_s, 1810);
     const TargetDrift* zero = e.find(0, kDown);
     ASSERT_TRUE(zero);
@@ -129,7 +129,7 @@ TEST(Iso230_3Golden, movingAxisBothDirectionsKeptApart) {
     ASSERT_GE(e.max_index, 0);
     EXPECT_EQ(e.targets[std::size_t(e.max_index)].target_mm, 100);
     EXPECT_EQ(e.targets[std::size_t(e.max_index)].direction, kUp);
-    EXPECT_NEAR(e.max_drift_um, 8.3, kExact);
+    EXPECT_NEAR(e.max_drift_um, 8.3, kExactUm);
     EXPECT_EQ(e.stabilised_time_s, 2400);
     EXPECT_TRUE(e.warnings.isEmpty());
 }
@@ -140,7 +140,7 @@ TEST(Iso230_3Golden, axisNotStabilisedWhenOneTargetIsNot) {
     const AxisDriftEvaluation e = evaluateAxisDrift(run, settings(600, 1));
     ASSERT_TRUE(e.ok()) << qPrintable(e.error);
     EXPECT_EQ(e.far_end_mm, 200);
-    EXPECT_NEAR(e.max_drift_um, 12, kExact);
+    EXPECT_NEAR(e.max_drift_um, 12, kExactUm);
     EXPECT_TRUE(std::isnan(e.stabilised_time_s));
 }
 
@@ -229,9 +229,9 @@ TEST(Iso230_3Golden, spindleTiltFromTwoProbesAtAKnownDistance) {
     EXPECT_EQ(e.tilts[0].name, QStringLiteral("A"));
     EXPECT_EQ(e.tilts[0].from, QStringLiteral("D_y"));
     EXPECT_EQ(e.tilts[0].to, QStringLiteral("D_a"));
-    EXPECT_NEAR(e.tilts[0].drift.max_drift_um, 2, kExact);
+    EXPECT_NEAR(e.tilts[0].drift.max_drift_um, 2, kExactUm);
     EXPECT_EQ(e.tilts[0].drift.max_drift_time_s, 3600);
-    EXPECT_NEAR(e.tilts[0].max_tilt_urad, 20, kExact);
+    EXPECT_NEAR(e.tilts[0].max_tilt_urad, 20, kExactUm);
     EXPECT_TRUE(
         e.notes.join(' ').contains(QStringLiteral("tilt B not derived: no probe with "
                                                   "role tilt_b")));

@@ -33,10 +33,6 @@ Campaign load(const QString& store, qint64 id) {
     return c ? *c : Campaign{};
 }
 
-QJsonObject json(const CliResult& r) {
-    return QJsonDocument::fromJson(r.out).object();
-}
-
 /// Two moving states at 1 s sampling: 1,500 s of run time (S1 900 s, S2 600 s).
 QString writeShortProcedure(const QTemporaryDir& dir) {
     const QString path = dir.filePath(QStringLiteral("short.json"));

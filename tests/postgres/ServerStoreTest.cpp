@@ -29,18 +29,19 @@ void PrintTo(StoreBackend backend, std::ostream* os) {
 
 namespace {
 
-Campaign exampleCampaign() {
-    BundleReadResult r = readBundle(exampleBundlePath());
-    EXPECT_TRUE(r.ok());
-    return *r.campaign;
-}
-
 qint64 count(CampaignStore& store, const QString& table) {
     QSqlQuery q(store.database());
     EXPECT_TRUE(q.exec(QStringLiteral("SELECT count(*) FROM ") + table));
     return q.next() ? q.value(0).toLongLong() : -1;
 }
 
+std::string backendName(const ::testing::TestParamInfo<db::StoreBackend>& info) {
+    return info.param == db::StoreBackend::Postgres ? "postgres" : "sqlite";
+}
+
+}  // namespace
+
+// The fixture is outside the anonymous namespace: its tests derive from it.
 /// A new empty store location of one back end: a file in a temporary folder,
 /// or a fresh database on the test cluster.
 class BothBackEnds : public ::testing::TestWithParam<db::StoreBackend> {
@@ -68,12 +69,6 @@ protected:
     QTemporaryDir m_dir;
     QString m_location;
 };
-
-std::string backendName(const ::testing::TestParamInfo<db::StoreBackend>& info) {
-    return info.param == db::StoreBackend::Postgres ? "postgres" : "sqlite";
-}
-
-}  // namespace
 
 TEST_P(BothBackEnds, importThenLoadGivesTheCampaignBackExactly) {
     const Campaign original = exampleCampaign();

@@ -24,7 +24,7 @@
 
 using namespace driftlab;
 using namespace driftlab::test;
-using Model = ui::CompensationTableModel;
+using TableModel = ui::CompensationTableModel;
 
 namespace {
 
@@ -64,15 +64,16 @@ struct Fixture {
 
     /// The page's table as CSV rows, from the text the view displays.
     QByteArray shownCsv() const {
-        const Model* m = page->tableModel();
+        const TableModel* m = page->tableModel();
         const bool bidirectional = page->bidirectionalBox()->isChecked();
         QByteArray csv = bidirectional ? "position_mm,correction_um,correction_minus_um\n"
                                        : "position_mm,correction_um\n";
         for (int row = 0; row < m->rowCount(); ++row) {
-            csv += m->data(m->index(row, Model::Position)).toString().toLatin1() + ',';
-            csv += m->data(m->index(row, Model::CorrectionPlus)).toString().toLatin1();
+            csv += m->data(m->index(row, TableModel::Position)).toString().toLatin1() + ',';
+            csv += m->data(m->index(row, TableModel::CorrectionPlus)).toString().toLatin1();
             if (bidirectional)
-                csv += ',' + m->data(m->index(row, Model::CorrectionMinus)).toString().toLatin1();
+                csv +=
+                    ',' + m->data(m->index(row, TableModel::CorrectionMinus)).toString().toLatin1();
             csv += '\n';
         }
         return csv;

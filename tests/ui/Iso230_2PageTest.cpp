@@ -19,7 +19,7 @@
 
 using namespace driftlab;
 using namespace driftlab::test;
-using Model = ui::Iso230_2TargetModel;
+using TargetModel = ui::Iso230_2TargetModel;
 
 namespace {
 
@@ -72,20 +72,20 @@ TEST(Iso230_2Page, figuresAndTargetsEqualTheCliJsonForTheSameRun) {
             EXPECT_EQ(page.figureText(QLatin1String(key)), shown(cli[QLatin1String(key)])) << key;
 
         const QJsonArray targets = cli[QStringLiteral("targets")].toArray();
-        const Model* m = page.targetModel();
+        const TargetModel* m = page.targetModel();
         ASSERT_EQ(m->rowCount(), targets.size());
         const std::pair<int, const char*> columns[] = {
-            {Model::Target, "target_mm"},   {Model::MeanUp, "mean_up"},
-            {Model::MeanDown, "mean_down"}, {Model::Mean, "mean"},
-            {Model::SUp, "s_up"},           {Model::SDown, "s_down"},
-            {Model::Reversal, "B"},         {Model::RUp, "R_up"},
-            {Model::RDown, "R_down"},       {Model::R, "R"}};
+            {TargetModel::Target, "target_mm"},   {TargetModel::MeanUp, "mean_up"},
+            {TargetModel::MeanDown, "mean_down"}, {TargetModel::Mean, "mean"},
+            {TargetModel::SUp, "s_up"},           {TargetModel::SDown, "s_down"},
+            {TargetModel::Reversal, "B"},         {TargetModel::RUp, "R_up"},
+            {TargetModel::RDown, "R_down"},       {TargetModel::R, "R"}};
         for (int row = 0; row < m->rowCount(); ++row) {
             const QJsonObject t = targets[row].toObject();
             for (const auto& [column, key] : columns)
                 expectSameNumber(m->data(m->index(row, column), Qt::UserRole),
                                  t[QLatin1String(key)], key);
-            EXPECT_EQ(m->data(m->index(row, Model::CountUp)).toInt(), t["n_up"].toInt());
+            EXPECT_EQ(m->data(m->index(row, TargetModel::CountUp)).toInt(), t["n_up"].toInt());
         }
         EXPECT_EQ(page.warningLabel()->text().isEmpty(),
                   cli[QStringLiteral("warnings")].toArray().isEmpty() &&

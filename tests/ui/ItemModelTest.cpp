@@ -8,20 +8,13 @@
 #include "../cli/CliRunner.h"
 #include "db/CampaignStore.h"
 #include "db/StoreOverview.h"
+#include "tests/ui/UiTestSupport.h"
 #include "ui/models/CampaignTreeModel.h"
 #include "ui/models/ChannelSetupModel.h"
 #include "ui/models/EventLogModel.h"
 
 namespace driftlab::ui {
 namespace {
-
-Channel ch(const char* id, Quantity quantity, ChannelRole role) {
-    Channel c;
-    c.id = QString::fromLatin1(id);
-    c.quantity = quantity;
-    c.role = role;
-    return c;
-}
 
 using Tester = QAbstractItemModelTester;
 
@@ -78,7 +71,7 @@ TEST(ChannelSetupModel, namesTheRowAndChannelOfEveryProblem) {
     auto channels = someChannels();
     channels[2].quantity = Quantity::Temperature;  // a file may say anything: flagged, not hidden
     channels[1].id = QStringLiteral("T_nut");
-    channels.push_back(ch("bad id", Quantity::Temperature, ChannelRole::Other));
+    channels.push_back(test::channel("bad id", Quantity::Temperature, ChannelRole::Other));
     model.setChannels(channels);
     const QStringList problems = model.problems(false);
     EXPECT_TRUE(problems.contains(
@@ -99,8 +92,8 @@ TEST(ChannelSetupModel, showsAndChecksTheDeviceChannelOfEachId) {
         QStringLiteral(DRIFTLAB_SOURCE_DIR "/resources/devices/temperature-8ch-pt100.json"),
         &error);
     ASSERT_TRUE(map) << qPrintable(error);
-    model.setChannels({ch("T3", Quantity::Temperature, ChannelRole::Nut),
-                       ch("T_nut", Quantity::Temperature, ChannelRole::Bearing)});
+    model.setChannels({test::channel("T3", Quantity::Temperature, ChannelRole::Nut),
+                       test::channel("T_nut", Quantity::Temperature, ChannelRole::Bearing)});
     model.setDeviceMap(map);
     EXPECT_TRUE(model.index(0, ChannelSetupModel::DeviceColumn)
                     .data()

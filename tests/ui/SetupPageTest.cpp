@@ -16,6 +16,7 @@
 #include <QTest>
 
 #include "core/bundle/CampaignJson.h"
+#include "tests/ui/UiTestSupport.h"
 #include "ui/app/Session.h"
 #include "ui/models/ChannelSetupModel.h"
 #include "ui/pages/SetupPage.h"
@@ -26,14 +27,6 @@
 
 namespace driftlab::ui {
 namespace {
-
-Channel ch(const char* id, Quantity quantity, ChannelRole role) {
-    Channel c;
-    c.id = QString::fromLatin1(id);
-    c.quantity = quantity;
-    c.role = role;
-    return c;
-}
 
 struct SetupPageTest : ::testing::Test {
     Session session;
@@ -66,9 +59,10 @@ TEST_F(SetupPageTest, eachBadFieldIsNamedBesideItAndInTheSummaryAndNothingIsAppl
     screw->lead_mm->setValue(0);
     page.machineForm()->machineName->clear();
     page.machineForm()->travelTo_mm->setValue(-5);
-    page.channelModel()->setChannels({ch("T_nut", Quantity::Temperature, ChannelRole::Nut),
-                                      ch("T_bed", Quantity::Temperature, ChannelRole::Structure),
-                                      ch("T_x", Quantity::Temperature, ChannelRole::DriftX)});
+    page.channelModel()->setChannels(
+        {test::channel("T_nut", Quantity::Temperature, ChannelRole::Nut),
+         test::channel("T_bed", Quantity::Temperature, ChannelRole::Structure),
+         test::channel("T_x", Quantity::Temperature, ChannelRole::DriftX)});
     page.rigForm()->speedup->setValue(0);
     page.procedureForm()->keyBoxes.front()->setValue(0);  // the sample interval
 
@@ -113,8 +107,9 @@ TEST_F(SetupPageTest, theModbusRigNeedsItsUrlsAndChannelIdsFromTheDeviceMap) {
         "Channels row 1 (T_nut): 'T_nut' is not a channel of the device map temperature-8ch")));
 
     // The module's ids with roles, and a real address: the set-up applies.
-    page.channelModel()->setChannels({ch("T1", Quantity::Temperature, ChannelRole::Nut),
-                                      ch("T2", Quantity::Temperature, ChannelRole::Ambient)});
+    page.channelModel()->setChannels(
+        {test::channel("T1", Quantity::Temperature, ChannelRole::Nut),
+         test::channel("T2", Quantity::Temperature, ChannelRole::Ambient)});
     page.rigForm()->temperatureUrl->setText(QStringLiteral("modbus://127.0.0.1:1502"));
     page.rigForm()->interferometerUrl->clear();
     ASSERT_TRUE(page.apply()) << qPrintable(page.validate().join('\n'));

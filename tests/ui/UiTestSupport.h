@@ -9,6 +9,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 
+#include "core/domain/Channel.h"
 #include "tests/cli/CliRunner.h"
 
 namespace driftlab::test {
@@ -38,6 +39,15 @@ inline QString importExample(const QTemporaryDir& dir, qint64* campaignId) {
     EXPECT_EQ(r.exitCode, 0) << r.err.constData();
     *campaignId = r.out.trimmed().toLongLong();
     return dir.filePath(QStringLiteral("store.sqlite"));
+}
+
+/// A channel of the setup tables: its id, quantity and role.
+inline Channel channel(const char* id, Quantity quantity, ChannelRole role) {
+    Channel c;
+    c.id = QString::fromLatin1(id);
+    c.quantity = quantity;
+    c.role = role;
+    return c;
 }
 
 /// Waits (event loop running) until `spy` has at least `count` signals; a

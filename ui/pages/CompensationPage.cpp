@@ -26,7 +26,7 @@
 namespace driftlab::ui {
 namespace {
 
-const QString kSource = QStringLiteral("compensation");
+const QString kCompensationEventSource = QStringLiteral("compensation");
 
 }  // namespace
 
@@ -129,7 +129,7 @@ CompensationPage::CompensationPage(Session& session, QWidget* parent)
                                                       : QStringLiteral(" (") +
                                                             warnings.join(QStringLiteral("; ")) +
                                                             QLatin1Char(')')));
-                emit m_session.event(QStringLiteral("info"), kSource,
+                emit m_session.event(QStringLiteral("info"), kCompensationEventSource,
                                      tr("table exported to %1").arg(path));
             });
     connect(m_export, &TableExportPanel::exportFailed, this, &CompensationPage::showError);
@@ -147,7 +147,7 @@ CompensationPage::~CompensationPage() = default;
 void CompensationPage::showError(const QString& message) {
     m_message->setText(
         QStringLiteral("<b style='color:#b00000'>%1</b>").arg(message.toHtmlEscaped()));
-    emit m_session.event(QStringLiteral("error"), kSource, message);
+    emit m_session.event(QStringLiteral("error"), kCompensationEventSource, message);
 }
 
 void CompensationPage::clearCampaign() {

@@ -21,7 +21,7 @@
 namespace driftlab::ui {
 namespace {
 
-const QString kSource = QStringLiteral("iso230-2");
+const QString kIsoEventSource = QStringLiteral("iso230-2");
 
 struct Figure {
     const char* key;    ///< as in `iso230-2 --json`
@@ -144,7 +144,7 @@ QString Iso230_2Page::figureText(const QString& key) const {
 void Iso230_2Page::showError(const QString& message) {
     m_message->setText(
         QStringLiteral("<b style='color:#b00000'>%1</b>").arg(message.toHtmlEscaped()));
-    emit m_session.event(QStringLiteral("error"), kSource, message);
+    emit m_session.event(QStringLiteral("error"), kIsoEventSource, message);
 }
 
 void Iso230_2Page::onLoaded(const LoadedCampaign& loaded) {
