@@ -8,6 +8,7 @@
 #include "db/StoreBackend.h"
 
 namespace driftlab::db {
+
 std::optional<qint64> storePush(CampaignStore& store, const PushRecord& push, QString* error) {
     QSqlQuery q(store.database());
     q.prepare(QStringLiteral(

@@ -94,7 +94,7 @@ void printJson(const QJsonObject& object);
 void writeFileAtomically(const QString& path, const QByteArray& text);
 void printLine(const QString& text);
 
-/// A length in µm to the nanometre, "n/a" where the data cannot give it.
+/// A figure in µm (or µrad) to three decimals, "n/a" where the data cannot give it.
 QString umText(double value_um);
 
 }  // namespace driftlab::cli

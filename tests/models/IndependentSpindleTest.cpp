@@ -38,8 +38,9 @@ TEST(IndependentSpindle, autoAgainstLeastSquaresOnAllSixteenRisesAndTheBestPair)
             tally.add(a);
             // Sixteen sensors around the heat paths follow the unsensed shaft
             // and column core nearly as a lag would: every model ends near the
-            // probes' noise (0.15 µm), where three training runs rank them by
-            // chance. `auto` may lose there, never by more than that noise …
+            // probes' noise (0.15 µm), where cross-validation over three
+            // training runs cannot rank them (each fold fits on two). `auto`
+            // may lose there, never by more than that noise …
             EXPECT_LT(a.score.rms_um, a.baselines.better_um() + 0.15);
             // … and it takes out the tens of µm of z drift as well as the baselines do.
             if (probe.role == ChannelRole::DriftZ) {
