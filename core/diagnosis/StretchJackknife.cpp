@@ -21,10 +21,8 @@ std::pair<double, double> span(const models::ReadingResiduals& r) {
 /// Adds r² of the quantity into its stretch of `sums` (run `run`).
 void addRun(const models::ReadingResiduals& r, const QString& channel, int perRun,
             std::pair<double, double> runSpan, std::size_t run, std::vector<double>& sums) {
-    const double width = (runSpan.second - runSpan.first) / perRun;
     const auto add = [&](double t, double v) {
-        const int k = width > 0 ? std::clamp(int((t - runSpan.first) / width), 0, perRun - 1) : 0;
-        sums[run * perRun + k] += v * v;
+        sums[run * perRun + stretchOf(t, runSpan.first, runSpan.second, perRun)] += v * v;
     };
     if (channel.isEmpty())
         for (std::size_t i = 0; i < r.error_um.size() && i < r.points.size(); ++i)
@@ -44,6 +42,11 @@ double gainWithout(const StretchSquares& s, int k) {
 }
 
 }  // namespace
+
+int stretchOf(double time_s, double first_s, double last_s, int perRun) {
+    const double width = (last_s - first_s) / perRun;
+    return width > 0 ? std::clamp(int((time_s - first_s) / width), 0, perRun - 1) : 0;
+}
 
 StretchSquares stretchSquares(const std::vector<models::ReadingResiduals>& before,
                               const std::vector<models::ReadingResiduals>& after,

@@ -22,6 +22,10 @@ struct StretchSquares {
     std::vector<double> before, after;
 };
 
+/// The stretch (0 … perRun − 1) of a reading at `time_s` in a run spanning
+/// [first_s, last_s]; readings outside it count to the nearest end.
+int stretchOf(double time_s, double first_s, double last_s, int perRun = kStretchesPerRun);
+
 /// Of the positioning error (`channel` empty) or one sensor's residual.
 /// `before` and `after` hold the same runs in the same order.
 StretchSquares stretchSquares(const std::vector<models::ReadingResiduals>& before,

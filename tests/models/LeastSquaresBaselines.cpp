@@ -27,11 +27,10 @@ diagnosis::StretchSquares heldOutStretches(const std::vector<RunData>& test,
     Eigen::Index at = 0;
     for (std::size_t r = 0; r < test.size(); ++r) {
         const Eigen::VectorXd measured = test[r].observedErrors();
-        const double first = test[r].observations.front().time_s;
-        const double width = (test[r].observations.back().time_s - first) / perRun;
+        const auto& obs = test[r].observations;
         for (Eigen::Index i = 0; i < measured.size(); ++i, ++at) {
-            const double t = test[r].observations[std::size_t(i)].time_s;
-            const int k = width > 0 ? std::clamp(int((t - first) / width), 0, perRun - 1) : 0;
+            const int k = diagnosis::stretchOf(obs[std::size_t(i)].time_s, obs.front().time_s,
+                                               obs.back().time_s, perRun);
             s.before[r * perRun + k] += measured[i] * measured[i];
             s.after[r * perRun + k] += residual_um[at] * residual_um[at];
         }
@@ -100,16 +99,18 @@ AutoAgainstBaselines autoAgainstBaselines(const std::vector<models::RunData>& tr
     EXPECT_TRUE(fit.success) << qPrintable(label) << ": " << qPrintable(fit.message);
     if (!fit.success) return result;
     result.chosen = model.chosen();
-    result.score = models::scoreModel(model, test);
-    EXPECT_TRUE(result.score.ok()) << qPrintable(label) << ": " << qPrintable(result.score.error);
-    if (!result.score.ok()) return result;
-    Eigen::VectorXd residual = stackRows(test, &RunData::observedErrors);
+    // Predicted once: scored, and summed by stretch for the comparison.
+    const Eigen::VectorXd measured = stackRows(test, &RunData::observedErrors);
+    Eigen::VectorXd predicted(measured.size());
     Eigen::Index at = 0;
     for (const RunData& run : test) {
         const Prediction p = model.predict(run);
-        for (double predicted : p.error_um) residual[at++] -= predicted;
+        EXPECT_TRUE(p.ok()) << qPrintable(label) << ": " << qPrintable(p.error);
+        if (!p.ok()) return result;
+        for (double value : p.error_um) predicted[at++] = value;
     }
-    const diagnosis::StretchSquares autoStretches = heldOutStretches(test, residual);
+    result.score = models::scoreResiduals(measured, predicted);
+    const diagnosis::StretchSquares autoStretches = heldOutStretches(test, measured - predicted);
     const LeastSquaresBaselines& b = result.baselines;
     result.probability_better =
         std::min(diagnosis::probabilityLarger(autoStretches, &b.all_rises.stretches),
