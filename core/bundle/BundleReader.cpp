@@ -1,6 +1,7 @@
 #include "core/bundle/BundleReader.h"
 
 #include <QHash>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -24,6 +25,36 @@ struct Overrun {
     int firstLine = 0;
     double furthest_mm = 0;  ///< largest distance outside the travel
 };
+
+/// A run's latest row of samples.csv, not yet stored.
+struct HeldRow {
+    double time_s = -std::numeric_limits<double>::infinity();
+    int line = 0;
+    std::vector<double> values;
+    bool held = false;
+};
+
+/// The cells of a row at the held row's time fill its empty cells; a cell that
+/// both give must agree: one instant has one reading.
+void mergeInto(HeldRow& held, const std::vector<double>& row, const CsvTable& csv,
+               const std::vector<int>& columns, const QString& run) {
+    for (std::size_t k = 0; k < row.size(); ++k) {
+        if (std::isnan(row[k])) continue;
+        if (std::isnan(held.values[k])) {
+            held.values[k] = row[k];
+        } else if (held.values[k] != row[k]) {
+            csv.fail(columns[k],
+                     QStringLiteral("column '%1' reads %2 at %3 s of run '%4', but %5 on line %6 "
+                                    "at the same time: one instant cannot have two readings")
+                         .arg(csv.header()[std::size_t(columns[k])])
+                         .arg(row[k])
+                         .arg(held.time_s)
+                         .arg(run)
+                         .arg(held.values[k])
+                         .arg(held.line));
+        }
+    }
+}
 
 class BundleParser {
 public:
@@ -57,11 +88,8 @@ private:
         auto device = m_source.open(name, &error);
         if (!device) throw BundleException({name, 0, 0, QStringLiteral("cannot open: ") + error});
         auto csv = std::make_unique<CsvTable>(std::move(device), name);
-        if (csv->europeanFormat())
-            warnings << QStringLiteral(
-                            "%1: read as ';'-separated with decimal commas (a "
-                            "spreadsheet's European export)")
-                            .arg(name);
+        if (const QString note = csv->formatNote(); !note.isEmpty())
+            warnings << name + QStringLiteral(": ") + note;
         return csv;
     }
 
@@ -118,6 +146,24 @@ private:
                         .arg(overrun.furthest_mm);
     }
 
+    /// The declared channel of a samples.csv column, also under a header giving its unit
+    /// ("T_nut [°C]", checked); nullptr for an axis column; throws for anything else.
+    const Channel* sampleChannel(const CsvTable& csv, int column) const {
+        const QString& header = csv.header()[std::size_t(column)];
+        if (const Channel* channel = m_campaign.findChannel(header)) return channel;
+        if (isAxisColumn(header)) return nullptr;
+        const std::optional<HeaderWithUnit> withUnit = splitHeaderUnit(header);
+        const Channel* channel = withUnit ? m_campaign.findChannel(withUnit->id) : nullptr;
+        if (!channel)
+            throw BundleException({kSamplesFile, 1, column + 1,
+                                   QStringLiteral("column '%1' is not a channel declared in %2")
+                                       .arg(header, kCampaignFile)});
+        if (const auto why = wrongUnit(channel->quantity, withUnit->unit))
+            throw BundleException(
+                {kSamplesFile, 1, column + 1, QStringLiteral("column '%1': %2").arg(header, *why)});
+        return channel;
+    }
+
     void check(const CsvTable& csv, int column, const std::optional<QString>& why) {
         if (why)
             csv.fail(column, QStringLiteral("column '%1': %2").arg(csv.header()[column], *why));
@@ -137,13 +183,14 @@ private:
         std::vector<int> dataCols;
         std::vector<std::optional<Quantity>> quantities;  // nothing for axis columns
         for (std::size_t i = 0; i < csv.header().size(); ++i) {
-            const QString& name = csv.header()[i];
             if (int(i) == runCol || int(i) == timeCol) continue;
-            const Channel* channel = m_campaign.findChannel(name);
-            if (!isAxisColumn(name) && !channel)
+            const Channel* channel = sampleChannel(csv, int(i));
+            const QString name = channel ? channel->id : csv.header()[i];
+            const auto& columns = m_campaign.sample_columns;
+            if (std::find(columns.begin(), columns.end(), name) != columns.end())
                 throw BundleException({kSamplesFile, 1, int(i) + 1,
-                                       QStringLiteral("column '%1' is not a channel declared in %2")
-                                           .arg(name, kCampaignFile)});
+                                       QStringLiteral("column '%1' is channel '%2' again")
+                                           .arg(csv.header()[i], name)});
             dataCols.push_back(int(i));
             quantities.push_back(channel ? std::optional(channel->quantity) : std::nullopt);
             m_campaign.sample_columns.push_back(name);
@@ -156,8 +203,19 @@ private:
         SampleRowSink* sink = m_options.sampleSink;
         if (sink) sink->begin(m_campaign);
 
-        std::vector<double> lastTime(m_campaign.runs.size(),
-                                     -std::numeric_limits<double>::infinity());
+        // Each run's latest row waits for a later time: a row at its time (two
+        // devices logged at one instant, or the log written twice) is merged.
+        std::vector<HeldRow> held(m_campaign.runs.size());
+        const auto store = [&](std::size_t r) {
+            HeldRow& h = held[r];
+            if (!h.held) return;
+            h.held = false;
+            if (sink) return sink->row(r, h.time_s, h.values.data());
+            SampleSeries& s = m_campaign.runs[r].samples;
+            s.time_s.push_back(h.time_s);
+            for (std::size_t k = 0; k < h.values.size(); ++k) s.values[k].push_back(h.values[k]);
+        };
+        int mergedRows = 0, firstMergedLine = 0;
         std::vector<double> row(dataCols.size());
         std::string lastRunId;  // rows come in long stretches of one run: skip the lookup
         std::size_t runIndex = 0;
@@ -171,13 +229,13 @@ private:
             }
             const double t = csv.number(timeCol);
             check(csv, timeCol, impossibleTime(t));
-            if (t <= lastTime[runIndex])
-                csv.fail(
-                    timeCol,
-                    QStringLiteral("time goes backwards or repeats in run '%1' (%2 s after %3 s)")
-                        .arg(m_campaign.runs[runIndex].id)
-                        .arg(t)
-                        .arg(lastTime[runIndex]));
+            HeldRow& last = held[runIndex];
+            if (t < last.time_s)
+                csv.fail(timeCol,
+                         QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
+                             .arg(m_campaign.runs[runIndex].id)
+                             .arg(t)
+                             .arg(last.time_s));
             bool anyValue = false;
             for (std::size_t k = 0; k < dataCols.size(); ++k) {
                 const int column = dataCols[k];
@@ -196,16 +254,23 @@ private:
                 if (++emptyRows == 1) firstEmptyRowLine = csv.line();
                 continue;
             }
-            lastTime[runIndex] = t;
-            if (sink) {
-                sink->row(runIndex, t, row.data());
-            } else {
-                SampleSeries& s = m_campaign.runs[runIndex].samples;
-                s.time_s.push_back(t);
-                for (std::size_t k = 0; k < row.size(); ++k) s.values[k].push_back(row[k]);
+            if (last.held && t == last.time_s) {
+                mergeInto(last, row, csv, dataCols, m_campaign.runs[runIndex].id);
+                if (++mergedRows == 1) firstMergedLine = csv.line();
+                continue;
             }
+            store(runIndex);
+            last = {t, csv.line(), row, true};
             if ((n & 0xFFFF) == 0) reportProgress(csv, 0.0, 0.8);
         }
+        for (std::size_t r = 0; r < held.size(); ++r) store(r);
+        if (mergedRows > 0)
+            warnings << QStringLiteral(
+                            "%1:%2: %3 row(s) repeat the time of their run's row before "
+                            "and were merged into it (one instant, logged twice)")
+                            .arg(kSamplesFile)
+                            .arg(firstMergedLine)
+                            .arg(mergedRows);
         if (emptyRows > 0)
             warnings << QStringLiteral("%1:%2: %3 row(s) without any value were skipped")
                             .arg(kSamplesFile)

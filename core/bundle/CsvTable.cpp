@@ -21,6 +21,12 @@ extern "C" void onRecordEnd(int, void* table) {
     static_cast<CsvTable*>(table)->endRecord();
 }
 
+/// Only the space pads a field: libcsv's default also counts the tab, which
+/// would swallow a tab separator.
+extern "C" int isPadding(unsigned char c) {
+    return c == CSV_SPACE;
+}
+
 QString quoted(std::string_view s) {
     return QLatin1Char('\'') + QString::fromUtf8(s.data(), qsizetype(s.size())) + QLatin1Char('\'');
 }
@@ -39,10 +45,17 @@ CsvTable::CsvTable(std::unique_ptr<QIODevice> device, const QString& displayName
     if (!readRecord())
         throw BundleException(
             {m_fileName, 0, 0, QStringLiteral("missing header line (file is empty)")});
+    // A separator closing every line (some exporters write one) leaves an
+    // unnamed last column: ignored while it stays empty (next()).
+    std::size_t named = m_ends.size();
+    if (named > 1 && field(int(named) - 1).empty()) {
+        m_trailingSeparator = true;
+        --named;
+    }
     // A hash, not a scan of the columns before: a header of 100 000 columns
     // would otherwise take half a minute to check.
     QHash<QString, int> columnOf;
-    for (std::size_t i = 0; i < m_ends.size(); ++i) {
+    for (std::size_t i = 0; i < named; ++i) {
         std::string_view cell = field(int(i));
         QString name = QString::fromUtf8(cell.data(), qsizetype(cell.size()));
         if (name.isEmpty()) fail(int(i), QStringLiteral("empty column name in header"));
@@ -53,8 +66,9 @@ CsvTable::CsvTable(std::unique_ptr<QIODevice> device, const QString& displayName
         columnOf.insert(name, int(i));
         m_header.push_back(name);
     }
-    // A record with more fields is wrong whatever they hold: stop keeping them.
-    m_fieldLimit = m_header.size() + 1;
+    // A record with more fields (than the header's, and the trailing
+    // separator's) is wrong whatever they hold: stop keeping them.
+    m_fieldLimit = m_header.size() + 2;
 }
 
 CsvTable::~CsvTable() = default;
@@ -111,12 +125,30 @@ void CsvTable::endRecord() {
 
 void CsvTable::detectDelimiter(std::string_view firstLine) {
     // A spreadsheet set to a European locale writes "run;time_s;T_nut" and
-    // "20,06": a header with ';' and no ',' can only be that.
-    if (firstLine.find(';') != std::string_view::npos &&
-        firstLine.find(',') == std::string_view::npos) {
+    // "20,06": a header with ';' and no ',' can only be that. A header with
+    // tabs and neither is a tab-separated export (decimal points).
+    const bool comma = firstLine.find(',') != std::string_view::npos;
+    if (!comma && firstLine.find(';') != std::string_view::npos) {
         m_delimiter = ';';
-        csv_set_delim(m_parser.get(), ';');
+    } else if (!comma && firstLine.find('\t') != std::string_view::npos) {
+        m_delimiter = '\t';
+        csv_set_space_func(m_parser.get(), isPadding);
     }
+    csv_set_delim(m_parser.get(), m_delimiter);
+}
+
+QString CsvTable::formatNote() const {
+    QStringList notes;
+    if (m_delimiter == ';')
+        notes << QStringLiteral(
+            "read as ';'-separated with decimal commas (a spreadsheet's "
+            "European export)");
+    if (m_delimiter == '\t') notes << QStringLiteral("read as tab-separated");
+    if (m_trailingSeparator)
+        notes << QStringLiteral(
+            "every line ends with a separator: the unnamed, empty last "
+            "column is ignored");
+    return notes.join(QStringLiteral("; "));
 }
 
 bool CsvTable::feedLine() {
@@ -168,6 +200,13 @@ bool CsvTable::readRecord() {
 bool CsvTable::next() {
     while (readRecord()) {
         if (m_ends.size() == 1 && m_ends[0] == 0) continue;  // a line of spaces
+        if (m_trailingSeparator && m_recordFields == m_header.size() + 1) {
+            if (!field(int(m_header.size())).empty())
+                fail(int(m_header.size()),
+                     QStringLiteral("a value under the unnamed last column: '%1'")
+                         .arg(text(int(m_header.size()))));
+            m_recordFields = m_header.size();
+        }
         if (m_recordFields != m_header.size())
             fail(int(std::min(m_ends.size(), m_header.size())),
                  QStringLiteral("expected %1 fields as in the header, found %2%3")

@@ -3,7 +3,8 @@
 // fields, doubled quotes, embedded delimiters and line breaks, CRLF). A UTF-8
 // byte-order mark is skipped. The file is read in chunks, so memory does not
 // grow with the file. A ';'-separated file (the European spreadsheet export) is
-// read too, with decimal commas in its numbers, and the caller is told so.
+// read too, with decimal commas in its numbers, and so is a tab-separated one
+// and one whose every line ends with a separator; the caller is told so.
 // Every error names file, line and column.
 
 #include <QString>
@@ -36,6 +37,9 @@ public:
     int requireColumn(const QString& name) const;
     /// True when the file is ';'-separated with decimal commas.
     bool europeanFormat() const { return m_delimiter == ';'; }
+    /// How the file departs from plain ','-separated CSV, as a reader should
+    /// be told ("read as tab-separated"), or empty.
+    QString formatNote() const;
 
     /// Advances to the next non-blank record. Throws if its field count differs
     /// from the header's (e.g. a truncated last line) or its quoting is broken.
@@ -74,6 +78,7 @@ private:
     std::unique_ptr<QIODevice> m_device;
     std::unique_ptr<csv_parser, ParserDeleter> m_parser;
     char m_delimiter = ',';
+    bool m_trailingSeparator = false;  ///< the header ends with a separator
 
     std::string m_chunk;  ///< bytes read but not yet fed
     std::size_t m_chunkPos = 0;

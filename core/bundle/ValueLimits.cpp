@@ -1,5 +1,7 @@
 #include "core/bundle/ValueLimits.h"
 
+#include <QRegularExpression>
+#include <QStringList>
 #include <cmath>
 
 namespace driftlab {
@@ -84,6 +86,40 @@ std::optional<QString> impossibleTime(double time_s) {
             .arg(number(time_s))
             .arg(number(kMaxTimeS));
     return std::nullopt;
+}
+
+std::optional<HeaderWithUnit> splitHeaderUnit(const QString& header) {
+    static const QRegularExpression withUnit(
+        QStringLiteral(R"(^\s*([A-Za-z0-9_]+)\s*(?:\[\s*([^\]]+?)\s*\]|\(\s*([^)]+?)\s*\))\s*$)"));
+    const QRegularExpressionMatch m = withUnit.match(header);
+    if (!m.hasMatch()) return std::nullopt;
+    return HeaderWithUnit{m.captured(1), m.hasCaptured(2) ? m.captured(2) : m.captured(3)};
+}
+
+std::optional<QString> wrongUnit(Quantity quantity, const QString& unit) {
+    // The spellings loggers use: the micro sign and the Greek mu, "deg C" …
+    QString u = unit;
+    u.remove(QLatin1Char(' ')).replace(QChar(0x03BC), QChar(0x00B5));
+    QStringList spellings;
+    switch (quantity) {
+        case Quantity::Temperature:
+            spellings = {QStringLiteral("°C"), QStringLiteral("degC"), QStringLiteral("C"),
+                         QStringLiteral("℃"), QStringLiteral("celsius")};
+            break;
+        case Quantity::Displacement:
+            spellings = {QStringLiteral("µm"), QStringLiteral("um"), QStringLiteral("micron"),
+                         QStringLiteral("microns")};
+            break;
+        case Quantity::Speed:
+            spellings = {QStringLiteral("rpm"), QStringLiteral("1/min"), QStringLiteral("min^-1"),
+                         QStringLiteral("min-1"), QStringLiteral("U/min")};
+            break;
+    }
+    if (spellings.contains(u, Qt::CaseInsensitive)) return std::nullopt;
+    return QStringLiteral(
+               "the header gives its unit as '%1', but a %2 channel is read in %3 "
+               "(a unit mix-up? convert the column, or name it without a unit)")
+        .arg(unit, toString(quantity), unitOf(quantity));
 }
 
 }  // namespace driftlab

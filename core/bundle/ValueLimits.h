@@ -23,4 +23,15 @@ std::optional<QString> impossibleDeviation(double deviation_um);
 /// A time in s since the run's start: within ±1e7 s (four months).
 std::optional<QString> impossibleTime(double time_s);
 
+/// A samples.csv header that names its unit, as loggers write it:
+/// "T_nut [°C]", "D_z (µm)".
+struct HeaderWithUnit {
+    QString id, unit;
+};
+/// The id and the unit of such a header, or nothing when it names none.
+std::optional<HeaderWithUnit> splitHeaderUnit(const QString& header);
+/// Why `unit` is not the unit of `quantity` in a bundle (°C, µm, rpm; a unit
+/// mix-up, named), or nothing when it is one of its spellings.
+std::optional<QString> wrongUnit(Quantity quantity, const QString& unit);
+
 }  // namespace driftlab

@@ -1,5 +1,6 @@
 // Bundles as other software writes them (issue 9): Python's csv module with
 // every cell quoted, CRLF and a byte-order mark; a European spreadsheet export;
+// a tab-separated one with units in the header; two loggers merged row by row;
 // Info-ZIP archives; an axis that overruns its travel to reverse. Each must
 // import through the real driftlab-cli and give the same campaign as the plain
 // example; export never mixes two campaigns in one folder.
@@ -84,6 +85,66 @@ TEST(RealWorldBundle, europeanSpreadsheetExportIsReadWithAWarning) {
     QByteArray err;
     EXPECT_EQ(importedAndExported(bundle, QDir(dir.path()), &err), exampleCampaign());
     EXPECT_TRUE(err.contains("warning: samples.csv: read as ';'-separated with decimal commas"))
+        << err.constData();
+}
+
+TEST(RealWorldBundle, twoDevicesLoggedInSeparateRowsAtOneTimeImportAsOneRowEach) {
+    // A script that concatenates two loggers' files and sorts by time, without
+    // grouping: the thermometers' row and the axis drive's row of each instant
+    // follow each other, each with the other's cells empty; and a logger that
+    // restarted wrote every 50th row twice.
+    QTemporaryDir dir;
+    const QString bundle = dir.filePath(QStringLiteral("two-devices"));
+    copyBundle(exampleBundlePath(), bundle);
+    const char* script = R"(
+import csv, sys
+path = sys.argv[1] + '/samples.csv'
+rows = list(csv.reader(open(path, newline='')))
+header, out = rows[0], [rows[0]]
+device = [c.startswith('T_') for c in header]
+for n, row in enumerate(rows[1:]):
+    out.append(row[:2] + [c if device[k] else '' for k, c in enumerate(row) if k >= 2])
+    out.append(row[:2] + [c if not device[k] else '' for k, c in enumerate(row) if k >= 2])
+    if n % 50 == 0:
+        out.append(row)
+with open(path, 'w', newline='') as f:
+    csv.writer(f, lineterminator='\n').writerows(out)
+)";
+    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromLatin1(script), bundle});
+    QByteArray err;
+    EXPECT_EQ(importedAndExported(bundle, QDir(dir.path()), &err), exampleCampaign());
+    // Every instant's second row (542), and the 11 rows written twice.
+    EXPECT_TRUE(
+        err.contains("warning: samples.csv:3: 553 row(s) repeat the time of their run's "
+                     "row before and were merged into it"))
+        << err.constData();
+}
+
+TEST(RealWorldBundle, tabSeparatedWithUnitsInTheHeaderAndTrailingTabsImportsAsThePlainBundle) {
+    // A spreadsheet's "text (tab delimited)" export of a sheet whose headers
+    // carry units, with a tab closing every line.
+    QTemporaryDir dir;
+    const QString bundle = dir.filePath(QStringLiteral("tabs"));
+    copyBundle(exampleBundlePath(), bundle);
+    const char* script = R"(
+import csv, glob, sys
+unit = {'T': ' [°C]', 'D': ' (µm)', 'S': ' [rpm]'}
+for path in glob.glob(sys.argv[1] + '/*.csv'):
+    rows = list(csv.reader(open(path, newline='')))
+    if path.endswith('samples.csv'):
+        rows[0] = [c + unit.get(c[0], '') if c[1:2] == '_' else c for c in rows[0]]
+    with open(path, 'w', newline='', encoding='utf-8') as f:
+        csv.writer(f, delimiter='\t', lineterminator='\r\n').writerows(r + [''] for r in rows)
+)";
+    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromUtf8(script), bundle});
+    ASSERT_TRUE(readFile(QDir(bundle).filePath(QStringLiteral("samples.csv")))
+                    .startsWith("run\ttime_s\tT_nut [\xC2\xB0"
+                                "C]\t"));
+    QByteArray err;
+    EXPECT_EQ(importedAndExported(bundle, QDir(dir.path()), &err), exampleCampaign());
+    EXPECT_TRUE(
+        err.contains("warning: positioning.csv: read as tab-separated; every line ends "
+                     "with a separator: the unnamed, empty last column is ignored"))
         << err.constData();
 }
 

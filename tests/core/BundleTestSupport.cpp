@@ -175,7 +175,34 @@ const std::vector<BadBundleCase>& badBundleCases() {
          "positioning.csv:2:6", "NaN or infinite value"},
         {"time_backwards",
          [=](const QString& d) { replaceInFile(file(d, "samples.csv"), "\nS1,30,", "\nS1,5,"); },
-         "samples.csv:5:2", "time goes backwards or repeats in run 'S1' (5 s after 20 s)"},
+         "samples.csv:5:2", "time goes backwards in run 'S1' (5 s after 20 s)"},
+        // One instant has one reading: a repeated time may only fill cells.
+        {"two_readings_at_one_instant",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,30,20.12,", "\nS1,20,20.12,");
+         },
+         "samples.csv:5:3",
+         "column 'T_nut' reads 20.12 at 20 s of run 'S1', but 20.08 on line 4 at the same time"},
+        {"fahrenheit_in_header",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "run,time_s,T_nut,", "run,time_s,T_nut [°F],");
+         },
+         "samples.csv:1:3",
+         "column 'T_nut [°F]': the header gives its unit as '°F', but a temperature channel is "
+         "read in °C"},
+        {"channel_twice_in_header",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "T_air,T_bed", "T_air,T_air (degC)");
+         },
+         "samples.csv:1:8", "column 'T_air (degC)' is channel 'T_air' again"},
+        {"value_under_a_trailing_separator",
+         [=](const QString& d) {
+             QList<QByteArray> lines = readFile(file(d, "samples.csv")).split('\n');
+             for (qsizetype i = 0; i < lines.size(); ++i)
+                 if (!lines[i].isEmpty()) lines[i] += i == 2 ? ",7" : ",";
+             writeFile(file(d, "samples.csv"), lines.join('\n'));
+         },
+         "samples.csv:3:19", "a value under the unnamed last column: '7'"},
         {"truncated_csv",
          [=](const QString& d) {
              QByteArray csv = readFile(file(d, "samples.csv"));
