@@ -40,9 +40,14 @@ QString describeSignal(const Signal& signal) {
         .arg(signal.name);
 }
 
-double valueAt(const Signal& signal, double time_s, double max_gap_s, const QString& runId) {
+double Signal::gapLimit_s(double max_gap_s) const {
+    return std::max(max_gap_s, 3 * sampling_s);
+}
+
+double valueAt(const Signal& signal, double time_s, double runGap_s, const QString& runId) {
     const std::vector<double>& t = signal.time_s;
     if (t.empty()) throw noSamples(signal, runId);
+    const double max_gap_s = signal.gapLimit_s(runGap_s);
     auto gap = [&](double from, double to) { return gapError(signal, runId, from, to, max_gap_s); };
     const auto hi = std::lower_bound(t.begin(), t.end(), time_s);
     const std::size_t i = std::size_t(hi - t.begin());
@@ -64,8 +69,9 @@ double valueAt(const Signal& signal, double time_s, double max_gap_s, const QStr
 void requireCoverage(const RunData& run, const Signal& signal, double until_s) {
     const std::vector<double>& t = signal.time_s;
     if (t.empty()) throw noSamples(signal, run.run_id);
+    const double max_gap_s = signal.gapLimit_s(run.max_gap_s);
     auto check = [&](double from, double to) {
-        if (to - from > run.max_gap_s) throw gapError(signal, run.run_id, from, to, run.max_gap_s);
+        if (to - from > max_gap_s) throw gapError(signal, run.run_id, from, to, max_gap_s);
     };
     check(0.0, t.front());
     for (std::size_t i = 1; i < t.size(); ++i) check(t[i - 1], t[i]);

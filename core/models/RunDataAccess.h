@@ -16,12 +16,13 @@ namespace driftlab::models {
 /// "channel 'T_nut'" or "column 'torque_Nm'", for messages.
 QString describeSignal(const Signal& signal);
 
-/// Linear interpolation at `time_s`, held flat up to `max_gap_s` beyond the
-/// first and last samples; a gap longer than `max_gap_s` around the time is an error.
+/// Linear interpolation at `time_s`, held flat up to the signal's gap limit
+/// (Signal::gapLimit_s of the run's `max_gap_s`) beyond the first and last
+/// samples; a longer gap around the time is an error.
 double valueAt(const Signal& signal, double time_s, double max_gap_s, const QString& runId);
 
 /// Requires samples from the run's start to `until_s` with no gap longer than
-/// the run's gap limit (a held signal must not be held across a hole).
+/// the signal's gap limit (a held signal must not be held across a hole).
 void requireCoverage(const RunData& run, const Signal& signal, double until_s);
 
 /// Temperature rises (rows: points, columns: channels) of the channels at the points.

@@ -43,6 +43,13 @@ void checkSampleTable(const Run& run) {
                     .arg(s.time_s.size()));
 }
 
+double median(std::vector<double> v) {
+    const std::size_t mid = v.size() / 2;
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(mid), v.end());
+    if (v.size() % 2 == 1) return v[mid];
+    return 0.5 * (v[mid] + *std::max_element(v.begin(), v.begin() + std::ptrdiff_t(mid)));
+}
+
 /// The present samples of a column (NaN marks a missing sample).
 Signal presentSamples(const Run& run, const QString& column) {
     Signal signal;
@@ -59,14 +66,13 @@ Signal presentSamples(const Run& run, const QString& column) {
         signal.time_s.push_back(run.samples.time_s[i]);
         signal.value.push_back(values[i]);
     }
+    if (signal.time_s.size() > 1) {
+        std::vector<double> intervals(signal.time_s.size() - 1);
+        for (std::size_t i = 1; i < signal.time_s.size(); ++i)
+            intervals[i - 1] = signal.time_s[i] - signal.time_s[i - 1];
+        signal.sampling_s = median(std::move(intervals));
+    }
     return signal;
-}
-
-double median(std::vector<double> v) {
-    const std::size_t mid = v.size() / 2;
-    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(mid), v.end());
-    if (v.size() % 2 == 1) return v[mid];
-    return 0.5 * (v[mid] + *std::max_element(v.begin(), v.begin() + std::ptrdiff_t(mid)));
 }
 
 TemperatureRise temperatureRise(const Run& run, const Channel& channel,
@@ -82,12 +88,12 @@ TemperatureRise temperatureRise(const Run& run, const Channel& channel,
         rise.unusable = where + QStringLiteral(": no samples in this run");
         return rise;
     }
-    if (s.time_s.front() > options.max_gap_s) {
-        rise.unusable =
-            where + QStringLiteral(
-                        ": first sample at %1 s, too late for a reference "
-                        "at the run's start (limit %2 s)")
-                        .arg(messageNumber(s.time_s.front()), messageNumber(options.max_gap_s));
+    if (s.time_s.front() > s.gapLimit_s(options.max_gap_s)) {
+        rise.unusable = where + QStringLiteral(
+                                    ": first sample at %1 s, too late for a reference "
+                                    "at the run's start (limit %2 s)")
+                                    .arg(messageNumber(s.time_s.front()),
+                                         messageNumber(s.gapLimit_s(options.max_gap_s)));
         return rise;
     }
     std::vector<double> window;

@@ -51,7 +51,14 @@ struct Signal {
     QString name;  ///< channel id or axis column
     std::vector<double> time_s;
     std::vector<double> value;
+    /// The median interval between its samples: a logger's own rhythm, which
+    /// a gap is measured against (gapLimit_s); 0 when unknown.
+    double sampling_s = 0;
     bool empty() const { return time_s.empty(); }
+    /// The longest stretch without a sample that is not a hole in the data:
+    /// `max_gap_s`, or three of the signal's own intervals when it is logged
+    /// more slowly than that (a thermometer read every 5 min is no outage).
+    double gapLimit_s(double max_gap_s) const;
 };
 
 /// The rise ΔT = T − T(run start) of one temperature channel over one run.

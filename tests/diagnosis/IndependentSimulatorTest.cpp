@@ -10,6 +10,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
 #include <future>
 #include <iostream>
 #include <map>
@@ -120,4 +122,38 @@ TEST(IndependentSimulator, diagnosisOnCampaignsItDidNotWrite) {
               test::kMaxBrier)
         << "the confidences do not say how often the causes named are right";
     EXPECT_GE(double(correct), kIndependentFloor * double(cases.size()));
+}
+
+TEST(IndependentSimulator, aLoggerReadingEveryFiveMinutesGetsTheSameVerdicts) {
+    // The same campaigns with samples.csv thinned by Python to one row per run
+    // every 300 s, as a slow data logger writes them: the interpolation must
+    // not take the logger's rhythm for holes (it did: "no sample between 0 s
+    // and 300 s, a gap longer than the 120 s limit" refused every one).
+    const QDir suite(QStringLiteral(DRIFTLAB_INDEPENDENT_SUITE));
+    QTemporaryDir work;
+    const char* thin = R"(
+import csv, shutil, sys
+src, dst = sys.argv[1], sys.argv[2]
+shutil.copytree(src, dst)
+rows = list(csv.reader(open(src + '/samples.csv', newline='')))
+out, last = [rows[0]], {}
+for r in rows[1:]:
+    if r[0] not in last or float(r[1]) - last[r[0]] >= 300:
+        out.append(r)
+        last[r[0]] = float(r[1])
+csv.writer(open(dst + '/samples.csv', 'w', newline=''), lineterminator='\n').writerows(out)
+)";
+    for (const auto& [bundle, expected] :
+         {std::pair{"forced_convection_m07", "forced_convection"}, {"null_a", "none"}}) {
+        const QString thinned = work.filePath(QString::fromLatin1(bundle));
+        QProcess python;
+        python.start(QStringLiteral("python3"),
+                     {QStringLiteral("-c"), QString::fromLatin1(thin),
+                      suite.filePath(QString::fromLatin1(bundle)), thinned});
+        ASSERT_TRUE(python.waitForFinished(60'000));
+        ASSERT_EQ(python.exitCode(), 0) << python.readAllStandardError().constData();
+        const Outcome o = diagnoseBundle(thinned, QString::fromLatin1(expected));
+        std::cout << bundle << " every 300 s: " << qPrintable(o.verdict) << "\n";
+        EXPECT_EQ(o.verdict, QString::fromLatin1(expected)) << qPrintable(o.detail);
+    }
 }
