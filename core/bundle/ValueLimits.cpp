@@ -81,10 +81,18 @@ std::optional<QString> impossibleDeviation(double deviation_um) {
 }
 
 std::optional<QString> impossibleTime(double time_s) {
-    if (std::abs(time_s) > kMaxTimeS)
-        return QStringLiteral("%1 s is beyond %2 s since the run's start (ms instead of s?)")
+    // A logger's clock gives seconds (about 1.8e9 today) or milliseconds
+    // (1.8e12) since 1970; a run's own counter in ms stays below either.
+    const double t = std::abs(time_s);
+    if (t > kMaxTimeS)
+        return QStringLiteral("%1 s is beyond %2 s since the run's start (%3)")
             .arg(number(time_s))
-            .arg(number(kMaxTimeS));
+            .arg(number(kMaxTimeS))
+            .arg(t >= 1e9 && t < 1e10    ? QStringLiteral("Unix time? time_s counts from the "
+                                                             "run's start: subtract its first time")
+                 : t >= 1e12 && t < 1e13 ? QStringLiteral("Unix time in ms? time_s counts seconds "
+                                                          "from the run's start")
+                                         : QStringLiteral("ms instead of s?"));
     return std::nullopt;
 }
 

@@ -267,6 +267,11 @@ const std::vector<BadBundleCase>& badBundleCases() {
              replaceInFile(file(d, "samples.csv"), "\nS1,10,", "\nS1,36000000,");
          },
          "samples.csv:3:2", "ms instead of s?"},
+        {"time_on_a_unix_clock",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,10,", "\nS1,1795000010,");
+         },
+         "samples.csv:3:2", "Unix time? time_s counts from the run's start"},
         {"feed_in_micrometres_per_minute",
          [=](const QString& d) {
              replaceInFile(file(d, "samples.csv"), ",423.333,8000,", ",423.333,8000000,");
