@@ -95,6 +95,7 @@ int diagnoseCommand(const QStringList& args) {
     }
     printLine(QStringLiteral("trained on %1, held out %2")
                   .arg(r.train_runs.join(QLatin1Char(',')), r.test_runs.join(QLatin1Char(','))));
+    for (const QString& note : r.base_fit.notes) printLine(QStringLiteral("base model: ") + note);
     printLine(
         QStringLiteral("base model on held-out runs: %1 µm RMS, peak %2 µm (reading noise %3 µm)")
             .arg(r.base_test.error_rms_um, 0, 'f', 2)

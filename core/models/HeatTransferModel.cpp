@@ -296,6 +296,16 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
                                  .arg(p.name, messageNumber(values[std::size_t(i)]), p.unit);
     }
     for (const auto& s : inputs.front().sensors) summary.inputs << s.channel_id;
+    QStringList rebuilt;
+    for (const RunData& run : training)
+        if (run.motion.empty()) rebuilt << run.run_id;
+    if (!rebuilt.isEmpty())
+        summary.notes << QStringLiteral(
+                             "run(s) %1 have no motion.csv: the nut's motion is rebuilt from the "
+                             "position column, and where the feed column shows strokes between "
+                             "two position samples they are filled in (motion.csv gives the "
+                             "heat input exactly)")
+                             .arg(rebuilt.join(QStringLiteral(", ")));
     summary.message = QStringLiteral(
                           "%1 identified on %2 run(s) in %3 iterations "
                           "(%4 s)")

@@ -55,7 +55,8 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
                                             "column; model '%2' needs the nut's motion")
                                  .arg(run.run_id, model));
         in.motion =
-            physics::motionFromPositionSamples(run.position_mm.time_s, run.position_mm.value);
+            physics::motionFromPositionSamples(run.position_mm.time_s, run.position_mm.value,
+                                               run.feed_mm_min.time_s, run.feed_mm_min.value);
     }
 
     const auto steps = static_cast<std::size_t>(std::ceil(in.duration_s / dt_s - 1e-9));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace driftlab::physics {
@@ -59,10 +60,65 @@ double depositNutHeat(std::vector<double>& energy_J, double cell_m, double nut_m
     return added;
 }
 
+namespace {
+
+/// The mean of |feed| over [t0, t1), each sample held until the next; NaN
+/// when no sample reaches into the interval.
+double meanAbsFeed(const std::vector<double>& time_s, const std::vector<double>& feed, double t0,
+                   double t1) {
+    auto k = std::upper_bound(time_s.begin(), time_s.end(), t0) - time_s.begin();
+    if (k == 0) return std::nan("");
+    double integral = 0;
+    for (double from = t0; from < t1; ++k) {
+        const double to = std::size_t(k) < time_s.size() ? std::min(t1, time_s[k]) : t1;
+        integral += std::abs(feed[std::size_t(k) - 1]) * (to - from);
+        from = to;
+    }
+    return integral / (t1 - t0);
+}
+
+/// The nut from x0 to x1 over [t0, t1] along a path of about `path_mm`,
+/// stroking between lo and hi: to the nearer or the farther end first, then
+/// n full strokes, then to x1, whichever of these comes nearest the path.
+void appendStrokes(std::vector<MotionSegment>& motion, double t0, double t1, double x0, double x1,
+                   double lo, double hi, double path_mm) {
+    const double stroke = hi - lo;
+    double bestMiss = std::numeric_limits<double>::infinity(), firstEnd = lo;
+    int bestStrokes = 0;
+    for (double end : {lo, hi}) {
+        const double other = end == lo ? hi : lo;
+        const double guess = (path_mm - std::abs(x0 - end)) / stroke;
+        for (int n = std::max(0, int(guess) - 1); n <= std::max(0, int(guess) + 1); ++n) {
+            const double last = n % 2 == 0 ? end : other;
+            const double miss =
+                std::abs(std::abs(x0 - end) + n * stroke + std::abs(last - x1) - path_mm);
+            if (miss < bestMiss) bestMiss = miss, firstEnd = end, bestStrokes = n;
+        }
+    }
+    std::vector<double> points{x0, firstEnd};
+    for (int n = 0; n < bestStrokes; ++n) points.push_back(points.back() == lo ? hi : lo);
+    points.push_back(x1);
+    double length = 0;
+    for (std::size_t i = 1; i < points.size(); ++i) length += std::abs(points[i] - points[i - 1]);
+    const double speed_mm_s = length / (t1 - t0);
+    double t = t0;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const double leg = points[i] - points[i - 1];
+        if (leg == 0) continue;
+        const double end = std::min(t1, t + std::abs(leg) / speed_mm_s);
+        motion.push_back({t, end, points[i - 1], points[i], std::copysign(speed_mm_s * 60, leg)});
+        t = end;
+    }
+}
+
+}  // namespace
+
 std::vector<MotionSegment> motionFromPositionSamples(const std::vector<double>& time_s,
-                                                     const std::vector<double>& position_mm) {
-    if (time_s.size() != position_mm.size())
-        throw std::invalid_argument("position samples: time and position differ in length");
+                                                     const std::vector<double>& position_mm,
+                                                     const std::vector<double>& feedTime_s,
+                                                     const std::vector<double>& feed_mm_min) {
+    if (time_s.size() != position_mm.size() || feedTime_s.size() != feed_mm_min.size())
+        throw std::invalid_argument("position samples: time and value differ in length");
     std::vector<MotionSegment> motion;
     motion.reserve(time_s.size());
     for (std::size_t i = 1; i < time_s.size(); ++i) {
@@ -73,8 +129,17 @@ std::vector<MotionSegment> motionFromPositionSamples(const std::vector<double>& 
         if (!std::isfinite(position_mm[i]) || !std::isfinite(position_mm[i - 1]))
             throw std::invalid_argument("position samples: missing position at sample " +
                                         std::to_string(std::isfinite(position_mm[i]) ? i - 1 : i));
-        motion.push_back({time_s[i - 1], time_s[i], position_mm[i - 1], position_mm[i],
-                          (position_mm[i] - position_mm[i - 1]) / dt * 60});
+        const double x0 = position_mm[i - 1], x1 = position_mm[i];
+        const double path_mm =
+            meanAbsFeed(feedTime_s, feed_mm_min, time_s[i - 1], time_s[i]) * dt / 60;
+        const std::size_t first = i - 1 - std::min(i - 1, kStrokeWindow);
+        const std::size_t last = std::min(time_s.size() - 1, i + kStrokeWindow);
+        const auto [lo, hi] = std::minmax_element(position_mm.begin() + std::ptrdiff_t(first),
+                                                  position_mm.begin() + std::ptrdiff_t(last) + 1);
+        if (path_mm > 1.2 * std::abs(x1 - x0) && *hi - *lo > 1e-6)
+            appendStrokes(motion, time_s[i - 1], time_s[i], x0, x1, *lo, *hi, path_mm);
+        else
+            motion.push_back({time_s[i - 1], time_s[i], x0, x1, (x1 - x0) / dt * 60});
     }
     return motion;
 }

@@ -118,6 +118,73 @@ TEST(NutHeatDeposition, MotionFromSamplesIsPiecewiseLinear) {
     EXPECT_TRUE(motionFromPositionSamples({5}, {1}).empty());
 }
 
+/// A nut stroking 100 ↔ 300 mm at 6000 mm/min (2 s a stroke) for 600 s,
+/// sampled as a logger would every `every_s` (its feed too, signed).
+struct SampledStrokes {
+    std::vector<double> time_s, position_mm, feed_mm_min;
+    static constexpr double kPath_mm = 600 * 100.0;  // 100 mm/s for 600 s
+    explicit SampledStrokes(double every_s) {
+        for (double t = 0; t <= 600; t += every_s) {
+            const double phase = std::fmod(t, 4.0);  // up for 2 s, down for 2 s
+            time_s.push_back(t);
+            position_mm.push_back(phase < 2 ? 100 + 100 * phase : 300 - 100 * (phase - 2));
+            feed_mm_min.push_back(phase < 2 ? 6000 : -6000);
+        }
+    }
+};
+
+double pathOf(const std::vector<MotionSegment>& motion, double* below200_s = nullptr) {
+    double path = 0;
+    for (const MotionSegment& m : motion) {
+        path += std::abs(m.to_mm - m.from_mm);
+        // Time spent below 200 mm, for a stroke at constant speed.
+        if (below200_s && m.to_mm != m.from_mm) {
+            const double lo = std::min(m.from_mm, m.to_mm), hi = std::max(m.from_mm, m.to_mm);
+            *below200_s += (m.end_s - m.start_s) * std::clamp((200 - lo) / (hi - lo), 0.0, 1.0);
+        }
+    }
+    return path;
+}
+
+TEST(NutHeatDeposition, StrokesASparseLogMissesAreFilledInFromTheLoggedFeed) {
+    // Every 7.3 s a logger sees one point of a 4 s back-and-forth: lines
+    // through the points travel a fifth of the path, and would heat as little.
+    const SampledStrokes log(7.3);
+    const auto lines = motionFromPositionSamples(log.time_s, log.position_mm);
+    EXPECT_LT(pathOf(lines), 0.3 * SampledStrokes::kPath_mm);
+    // With the feed, the strokes between the positions logged nearby: the
+    // whole path, in the range, half the time on either side of its middle,
+    // and without a hole in time.
+    const auto strokes =
+        motionFromPositionSamples(log.time_s, log.position_mm, log.time_s, log.feed_mm_min);
+    double below200_s = 0;
+    EXPECT_NEAR(pathOf(strokes, &below200_s), SampledStrokes::kPath_mm,
+                0.03 * SampledStrokes::kPath_mm);
+    EXPECT_NEAR(below200_s / log.time_s.back(), 0.5, 0.05);
+    for (std::size_t k = 0; k < strokes.size(); ++k) {
+        const MotionSegment& m = strokes[k];
+        EXPECT_GE(std::min(m.from_mm, m.to_mm), 100 - 1e-9);
+        EXPECT_LE(std::max(m.from_mm, m.to_mm), 300 + 1e-9);
+        EXPECT_NEAR(m.start_s, k == 0 ? 0 : strokes[k - 1].end_s, 1e-9);
+    }
+    EXPECT_NEAR(strokes.back().end_s, log.time_s.back(), 1e-9);
+}
+
+TEST(NutHeatDeposition, ADenseLogIsFollowedAsLoggedAndOnlyItsReversalsAreFilledIn) {
+    // At 10 Hz the lines through the points cut the corners of the reversals
+    // only; the feed restores them and adds nothing elsewhere.
+    const SampledStrokes log(0.1);
+    const auto lines = motionFromPositionSamples(log.time_s, log.position_mm);
+    const auto strokes =
+        motionFromPositionSamples(log.time_s, log.position_mm, log.time_s, log.feed_mm_min);
+    EXPECT_NEAR(pathOf(lines), SampledStrokes::kPath_mm, 0.03 * SampledStrokes::kPath_mm);
+    EXPECT_NEAR(pathOf(strokes), SampledStrokes::kPath_mm, 0.002 * SampledStrokes::kPath_mm);
+    std::size_t same = 0;
+    for (const MotionSegment& m : strokes)
+        same += std::find(lines.begin(), lines.end(), m) != lines.end();
+    EXPECT_GT(same, lines.size() * 9 / 10);
+}
+
 void expectThrowsMentioning(const std::vector<double>& t, const std::vector<double>& x,
                             const std::string& fragment) {
     try {
