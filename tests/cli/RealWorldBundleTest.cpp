@@ -6,6 +6,7 @@
 // example; export never mixes two campaigns in one folder.
 #include <gtest/gtest.h>
 #include <QDir>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -62,6 +63,17 @@ Campaign importedAndExported(const QString& bundle, const QDir& work, QByteArray
     return back.ok() ? *back.campaign : Campaign{};
 }
 
+/// Rewrites `bundle` with a Python script (given the folder) as other software
+/// would write it; imported and exported, it must be the plain example, and
+/// the import must warn `warning`.
+void expectRewrittenImportsAsThePlainBundle(const QString& bundle, const char* script,
+                                            const char* warning) {
+    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromUtf8(script), bundle});
+    QByteArray err;
+    EXPECT_EQ(importedAndExported(bundle, QFileInfo(bundle).dir(), &err), exampleCampaign());
+    EXPECT_TRUE(err.contains(warning)) << err.constData();
+}
+
 }  // namespace
 
 TEST(RealWorldBundle, quotedCrlfWithByteOrderMarkImportsAsThePlainBundle) {
@@ -110,14 +122,10 @@ for n, row in enumerate(rows[1:]):
 with open(path, 'w', newline='') as f:
     csv.writer(f, lineterminator='\n').writerows(out)
 )";
-    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromLatin1(script), bundle});
-    QByteArray err;
-    EXPECT_EQ(importedAndExported(bundle, QDir(dir.path()), &err), exampleCampaign());
     // Every instant's second row (542), and the 11 rows written twice.
-    EXPECT_TRUE(
-        err.contains("warning: samples.csv:3: 553 row(s) repeat the time of their run's "
-                     "row before and were merged into it"))
-        << err.constData();
+    expectRewrittenImportsAsThePlainBundle(bundle, script,
+                                           "warning: samples.csv:3: 553 row(s) repeat the time of "
+                                           "their run's row before and were merged into it");
 }
 
 TEST(RealWorldBundle, tabSeparatedWithUnitsInTheHeaderAndTrailingTabsImportsAsThePlainBundle) {
@@ -136,16 +144,13 @@ for path in glob.glob(sys.argv[1] + '/*.csv'):
     with open(path, 'w', newline='', encoding='utf-8') as f:
         csv.writer(f, delimiter='\t', lineterminator='\r\n').writerows(r + [''] for r in rows)
 )";
-    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromUtf8(script), bundle});
-    ASSERT_TRUE(readFile(QDir(bundle).filePath(QStringLiteral("samples.csv")))
+    expectRewrittenImportsAsThePlainBundle(
+        bundle, script,
+        "warning: positioning.csv: read as tab-separated; every line ends with a separator: the "
+        "unnamed, empty last column is ignored");
+    EXPECT_TRUE(readFile(QDir(bundle).filePath(QStringLiteral("samples.csv")))
                     .startsWith("run\ttime_s\tT_nut [\xC2\xB0"
                                 "C]\t"));
-    QByteArray err;
-    EXPECT_EQ(importedAndExported(bundle, QDir(dir.path()), &err), exampleCampaign());
-    EXPECT_TRUE(
-        err.contains("warning: positioning.csv: read as tab-separated; every line ends "
-                     "with a separator: the unnamed, empty last column is ignored"))
-        << err.constData();
 }
 
 TEST(RealWorldBundle, zipArchivesImportFromTheRootOrFromOneFolder) {
