@@ -5,6 +5,8 @@
 //   driftlab --demo           open the demo store, set up with the simulated rig
 //   driftlab --screenshots DIR   save every page as DIR/gui-<page>.png, then quit
 //   driftlab --demo --autopilot  play the demo through the window: run, fit, compare, diagnose
+#include <glog/logging.h>
+
 #include <QAbstractButton>
 #include <QApplication>
 #include <QCommandLineParser>
@@ -18,6 +20,9 @@
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
+    // Ceres logs through glog; a fit's doubts reach the user in its notes on
+    // the page, not as glog lines on the terminal (as in driftlab-cli).
+    FLAGS_minloglevel = google::GLOG_FATAL;
     QApplication::setOrganizationName(QStringLiteral("DriftLab"));
     QApplication::setApplicationName(QStringLiteral("DriftLab"));
     QApplication::setApplicationVersion(QStringLiteral(DRIFTLAB_VERSION));
