@@ -45,11 +45,11 @@ bool windowWithin(const DriftSeries& s, std::size_t i, const DriftSettings& sett
     return hi - lo < settings.tolerance_um;
 }
 
-QString mmText(double value_mm) {
+QString targetMmText(double value_mm) {
     return QString::number(value_mm, 'g', 12);
 }
 
-QString directionText(Direction d) {
+QString quotedDirection(Direction d) {
     return d == Direction::Positive ? QStringLiteral("'+'") : QStringLiteral("'-'");
 }
 
@@ -85,7 +85,7 @@ std::optional<TargetDrift> targetDrift(const TargetGroup& group, Direction direc
                                           [](const auto* m) { return m->cycle == 0; });
     if (references != 1) {
         *error = QStringLiteral("target %1 mm, direction %2: %3 in cycle 0 (the cold reference)")
-                     .arg(mmText(group.target_mm), directionText(direction),
+                     .arg(targetMmText(group.target_mm), quotedDirection(direction),
                           references == 0 ? QStringLiteral("no reading")
                                           : QStringLiteral("%1 readings").arg(references));
         return std::nullopt;
