@@ -40,10 +40,6 @@ QString describeSignal(const Signal& signal) {
         .arg(signal.name);
 }
 
-double Signal::gapLimit_s(double max_gap_s) const {
-    return std::max(max_gap_s, 3 * sampling_s);
-}
-
 double valueAt(const Signal& signal, double time_s, double runGap_s, const QString& runId) {
     const std::vector<double>& t = signal.time_s;
     if (t.empty()) throw noSamples(signal, runId);

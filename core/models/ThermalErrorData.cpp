@@ -88,12 +88,13 @@ TemperatureRise temperatureRise(const Run& run, const Channel& channel,
         rise.unusable = where + QStringLiteral(": no samples in this run");
         return rise;
     }
-    if (s.time_s.front() > s.gapLimit_s(options.max_gap_s)) {
-        rise.unusable = where + QStringLiteral(
-                                    ": first sample at %1 s, too late for a reference "
-                                    "at the run's start (limit %2 s)")
-                                    .arg(messageNumber(s.time_s.front()),
-                                         messageNumber(s.gapLimit_s(options.max_gap_s)));
+    const double gapLimit_s = s.gapLimit_s(options.max_gap_s);
+    if (s.time_s.front() > gapLimit_s) {
+        rise.unusable =
+            where + QStringLiteral(
+                        ": first sample at %1 s, too late for a reference "
+                        "at the run's start (limit %2 s)")
+                        .arg(messageNumber(s.time_s.front()), messageNumber(gapLimit_s));
         return rise;
     }
     std::vector<double> window;

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <QString>
 #include <QStringList>
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -58,7 +59,7 @@ struct Signal {
     /// The longest stretch without a sample that is not a hole in the data:
     /// `max_gap_s`, or three of the signal's own intervals when it is logged
     /// more slowly than that (a thermometer read every 5 min is no outage).
-    double gapLimit_s(double max_gap_s) const;
+    double gapLimit_s(double max_gap_s) const { return std::max(max_gap_s, 3 * sampling_s); }
 };
 
 /// The rise ΔT = T − T(run start) of one temperature channel over one run.
