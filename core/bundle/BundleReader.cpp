@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "core/bundle/CampaignJson.h"
 #include "core/bundle/CsvTable.h"
+#include "core/bundle/SampleRows.h"
 #include "core/bundle/ValueLimits.h"
 
 namespace driftlab {
@@ -26,36 +28,6 @@ struct Overrun {
     double furthest_mm = 0;  ///< largest distance outside the travel
 };
 
-/// A run's latest row of samples.csv, not yet stored.
-struct HeldRow {
-    double time_s = -std::numeric_limits<double>::infinity();
-    int line = 0;
-    std::vector<double> values;
-    bool held = false;
-};
-
-/// The cells of a row at the held row's time fill its empty cells; a cell that
-/// both give must agree: one instant has one reading.
-void mergeInto(HeldRow& held, const std::vector<double>& row, const CsvTable& csv,
-               const std::vector<int>& columns, const QString& run) {
-    for (std::size_t k = 0; k < row.size(); ++k) {
-        if (std::isnan(row[k])) continue;
-        if (std::isnan(held.values[k])) {
-            held.values[k] = row[k];
-        } else if (held.values[k] != row[k]) {
-            csv.fail(columns[k],
-                     QStringLiteral("column '%1' reads %2 at %3 s of run '%4', but %5 on line %6 "
-                                    "at the same time: one instant cannot have two readings")
-                         .arg(csv.header()[std::size_t(columns[k])])
-                         .arg(row[k])
-                         .arg(held.time_s)
-                         .arg(run)
-                         .arg(held.values[k])
-                         .arg(held.line));
-        }
-    }
-}
-
 class BundleParser {
 public:
     BundleParser(const BundleSource& source, const BundleReadOptions& options)
@@ -73,9 +45,11 @@ public:
             m_runIndex.insert(m_campaign.runs[i].id, int(i));
         setPositionLimits();
 
-        readSamples();
+        // Motion and positioning first: a run's first sample row then knows
+        // whether every file of the run starts on a logger's clock.
         if (m_source.contains(kMotionFile)) readMotion();
         if (m_source.contains(kPositioningFile)) readPositioning();
+        readSamples();
         if (m_options.progress) m_options.progress(1.0);
         return std::move(m_campaign);
     }
@@ -206,6 +180,7 @@ private:
         // Each run's latest row waits for a later time: a row at its time (two
         // devices logged at one instant, or the log written twice) is merged.
         std::vector<HeldRow> held(m_campaign.runs.size());
+        std::vector<std::optional<double>> offset_s(held.size());  // set by a run's first row
         const auto store = [&](std::size_t r) {
             HeldRow& h = held[r];
             if (!h.held) return;
@@ -227,9 +202,12 @@ private:
                 runIndex = runOf(csv, runCol);
                 lastRunId.assign(id);
             }
-            const double t = csv.number(timeCol);
-            check(csv, timeCol, impossibleTime(t));
+            check(csv, timeCol, impossibleTime(csv.number(timeCol)));
             HeldRow& last = held[runIndex];
+            if (!offset_s[runIndex])
+                offset_s[runIndex] =
+                    loggerClockOffset_s(m_campaign.runs[runIndex], csv.number(timeCol));
+            const double t = onRunClock(csv.number(timeCol), *offset_s[runIndex]);
             if (t < last.time_s)
                 csv.fail(timeCol,
                          QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
@@ -261,9 +239,10 @@ private:
             }
             store(runIndex);
             last = {t, csv.line(), row, true};
-            if ((n & 0xFFFF) == 0) reportProgress(csv, 0.0, 0.8);
+            if ((n & 0xFFFF) == 0) reportProgress(csv, 0.2, 0.8);
         }
         for (std::size_t r = 0; r < held.size(); ++r) store(r);
+        moveOntoRunClocks(offset_s);
         if (mergedRows > 0)
             warnings << QStringLiteral(
                             "%1:%2: %3 row(s) repeat the time of their run's row before "
@@ -277,6 +256,22 @@ private:
                             .arg(firstEmptyRowLine)
                             .arg(emptyRows);
         warnOverrun(kSamplesFile, overrun);
+    }
+
+    /// Runs logged on a logger's clock are counted from their first record,
+    /// with one warning naming them.
+    void moveOntoRunClocks(const std::vector<std::optional<double>>& offset_s) {
+        QStringList moved;
+        for (std::size_t r = 0; r < offset_s.size(); ++r) {
+            if (!offset_s[r].value_or(0.0)) continue;
+            moveOntoRunClock(m_campaign.runs[r], *offset_s[r]);
+            moved << QStringLiteral("'%1' at %2 s").arg(m_campaign.runs[r].id).arg(*offset_s[r]);
+        }
+        if (!moved.isEmpty())
+            warnings << QStringLiteral(
+                            "run(s) starting late in every file, as on a logger's clock: %1; "
+                            "counted from their first record (time_s counts from a run's start)")
+                            .arg(moved.join(QStringLiteral(", ")));
     }
 
     void readMotion() {
@@ -310,7 +305,7 @@ private:
             run.motion.push_back(m);
         }
         warnOverrun(kMotionFile, overrun);
-        reportProgress(csv, 0.8, 0.1);
+        reportProgress(csv, 0.0, 0.1);
     }
 
     void readPositioning() {
@@ -348,7 +343,7 @@ private:
             run.positioning.push_back(p);
         }
         warnOverrun(kPositioningFile, overrun);
-        reportProgress(csv, 0.9, 0.1);
+        reportProgress(csv, 0.1, 0.1);
     }
 
     /// The file must have exactly these columns (any order); returns their indices.

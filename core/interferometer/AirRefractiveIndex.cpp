@@ -12,7 +12,7 @@ double sigmaSquared_per_um2(double vacuumWavelength_nm) {
     return 1.0 / (lambda_um * lambda_um);
 }
 
-QString number(double value) {
+QString inputNumber(double value) {
     return QString::number(value, 'g', 10);
 }
 
@@ -86,7 +86,7 @@ std::optional<QString> airStateProblem(const AirState& air) {
         return QStringLiteral("NaN or infinite air reading");
     if (t < -10.0 || t > 50.0)
         return QStringLiteral("air temperature %1 °C is outside −10…50 °C%2")
-            .arg(number(t))
+            .arg(inputNumber(t))
             .arg(t > 253 && t < 333 ? QStringLiteral(" (kelvin? DriftLab expects °C)") : QString());
     if (p < 60'000.0 || p > 120'000.0) {
         QString hint;
@@ -97,13 +97,13 @@ std::optional<QString> airStateProblem(const AirState& air) {
         else if (p >= 0.6 && p <= 1.2)
             hint = QStringLiteral(" (bar? DriftLab expects Pa)");
         return QStringLiteral("air pressure %1 Pa is outside 60000…120000 Pa%2")
-            .arg(number(p))
+            .arg(inputNumber(p))
             .arg(hint);
     }
     if (h < 0.0 || h > 100.0)
-        return QStringLiteral("relative humidity %1 % is outside 0…100 %").arg(number(h));
+        return QStringLiteral("relative humidity %1 % is outside 0…100 %").arg(inputNumber(h));
     if (air.co2_ppm < 0.0 || air.co2_ppm > 2000.0)
-        return QStringLiteral("CO2 %1 ppm is outside 0…2000 ppm").arg(number(air.co2_ppm));
+        return QStringLiteral("CO2 %1 ppm is outside 0…2000 ppm").arg(inputNumber(air.co2_ppm));
     return std::nullopt;
 }
 

@@ -1,9 +1,10 @@
 // Bundles as other software writes them (issue 9): Python's csv module with
 // every cell quoted, CRLF and a byte-order mark; a European spreadsheet export;
 // a tab-separated one with units in the header; two loggers merged row by row;
-// Info-ZIP archives; an axis that overruns its travel to reverse. Each must
-// import through the real driftlab-cli and give the same campaign as the plain
-// example; export never mixes two campaigns in one folder.
+// a run on a logger's clock; Info-ZIP archives; an axis that overruns its
+// travel to reverse. Each must import through the real driftlab-cli and give
+// the same campaign as the plain example; export never mixes two campaigns in
+// one folder.
 #include <gtest/gtest.h>
 #include <QDir>
 #include <QFileInfo>
@@ -151,6 +152,52 @@ for path in glob.glob(sys.argv[1] + '/*.csv'):
     EXPECT_TRUE(readFile(QDir(bundle).filePath(QStringLiteral("samples.csv")))
                     .startsWith("run\ttime_s\tT_nut [\xC2\xB0"
                                 "C]\t"));
+}
+
+TEST(RealWorldBundle, aRunOnALoggersClockIsCountedFromItsFirstRecord) {
+    // A logger that counts from when it was switched on: run S1 starts at
+    // 5000 s in samples.csv, motion.csv and positioning.csv alike. Before, every
+    // model refused it ("no sample between 0 s and 5000 s").
+    QTemporaryDir dir;
+    const QString bundle = dir.filePath(QStringLiteral("clock"));
+    copyBundle(exampleBundlePath(), bundle);
+    const char* script = R"(
+import csv, sys
+for name, columns in (('samples', ['time_s']), ('positioning', ['time_s']),
+                      ('motion', ['start_s', 'end_s'])):
+    path = sys.argv[1] + '/' + name + '.csv'
+    rows = list(csv.reader(open(path, newline='')))
+    at = [rows[0].index(c) for c in columns]
+    for row in rows[1:]:
+        if row[0] == 'S1':
+            for i in at: row[i] = '%.3f' % (float(row[i]) + 5000)
+    csv.writer(open(path, 'w', newline='')).writerows(rows)
+)";
+    expectRewrittenImportsAsThePlainBundle(
+        bundle, script,
+        "warning: run(s) starting late in every file, as on a logger's clock: 'S1' at 5000 s; "
+        "counted from their first record");
+
+    // Only the thermometers late, the motion from 0 s: a logger that started
+    // late. Its times are kept, and the models name the hole.
+    copyBundle(exampleBundlePath(), dir.filePath(QStringLiteral("late")));
+    const char* lateLogger = R"(
+import csv, sys
+path = sys.argv[1] + '/samples.csv'
+rows = list(csv.reader(open(path, newline='')))
+rows = rows[:1] + [r for r in rows[1:] if r[0] != 'S1' or float(r[1]) >= 900]
+csv.writer(open(path, 'w', newline='')).writerows(rows)
+)";
+    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromUtf8(lateLogger),
+                                        dir.filePath(QStringLiteral("late"))});
+    const BundleReadResult late = readBundle(dir.filePath(QStringLiteral("late")));
+    ASSERT_TRUE(late.ok());
+    EXPECT_EQ(late.campaign->findRun(QStringLiteral("S1"))->samples.time_s.front(), 900);
+    EXPECT_FALSE(late.warnings.join(QLatin1Char('\n')).contains(QStringLiteral("clock")));
+    const CliResult fit = runCli({QStringLiteral("fit"), dir.filePath(QStringLiteral("late")),
+                                  QStringLiteral("--model"), QStringLiteral("heat-transfer")});
+    EXPECT_NE(fit.exitCode, 0);
+    EXPECT_TRUE(fit.err.contains("no sample between 0 s and 900 s")) << fit.err.constData();
 }
 
 TEST(RealWorldBundle, zipArchivesImportFromTheRootOrFromOneFolder) {

@@ -1,0 +1,47 @@
+#include "core/bundle/SampleRows.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace driftlab {
+
+void mergeInto(HeldRow& held, const std::vector<double>& row, const CsvTable& csv,
+               const std::vector<int>& columns, const QString& run) {
+    for (std::size_t k = 0; k < row.size(); ++k) {
+        if (std::isnan(row[k])) continue;
+        if (std::isnan(held.values[k])) {
+            held.values[k] = row[k];
+        } else if (held.values[k] != row[k]) {
+            csv.fail(columns[k],
+                     QStringLiteral("column '%1' reads %2 at %3 s of run '%4', but %5 on line %6 "
+                                    "at the same time: one instant cannot have two readings")
+                         .arg(csv.header()[std::size_t(columns[k])])
+                         .arg(row[k])
+                         .arg(held.time_s)
+                         .arg(run)
+                         .arg(held.values[k])
+                         .arg(held.line));
+        }
+    }
+}
+
+double loggerClockOffset_s(const Run& run, double firstSample_s) {
+    double first_s = firstSample_s;
+    if (!run.motion.empty()) first_s = std::min(first_s, run.motion.front().start_s);
+    if (!run.positioning.empty()) first_s = std::min(first_s, run.positioning.front().time_s);
+    return first_s > kLoggerClockStart_s ? first_s : 0.0;
+}
+
+double onRunClock(double time_s, double offset_s) {
+    return offset_s == 0 ? time_s : std::round((time_s - offset_s) * 1e6) / 1e6;
+}
+
+void moveOntoRunClock(Run& run, double offset_s) {
+    for (MotionSegment& m : run.motion) {
+        m.start_s = onRunClock(m.start_s, offset_s);
+        m.end_s = onRunClock(m.end_s, offset_s);
+    }
+    for (PositioningMeasurement& p : run.positioning) p.time_s = onRunClock(p.time_s, offset_s);
+}
+
+}  // namespace driftlab
