@@ -63,6 +63,8 @@ QJsonObject diagnosisJson(const diagnosis::DiagnosisResult& r) {
     if (!r.verdict_evidence.isEmpty())
         json[QStringLiteral("verdict_evidence")] = r.verdict_evidence;
     if (!r.remaining.isEmpty()) json[QStringLiteral("remaining")] = r.remaining;
+    if (!r.causes.isEmpty())
+        json[QStringLiteral("structure_explained")] = jsonNumber(r.structure_explained);
     return json;
 }
 

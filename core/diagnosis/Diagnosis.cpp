@@ -280,16 +280,27 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
         if (named) {
             result.verdict = causes.front();
             result.causes = causes;
+            // What the causes leave above the noise is a cause outside the
+            // library, and a named one may be imitating it: the probability
+            // that its gain is real and the largest is not yet that it is the
+            // cause. Its confidence keeps the share of the structure explained.
+            result.structure_explained =
+                structureExplained(result.base_test, adopted->test_summary);
+            for (auto& f : result.findings)
+                if (f.step == causes.indexOf(f.cause) + 1)
+                    f.confidence *= result.structure_explained;
             if (!adopted->test_summary.atNoiseLevel())
                 result.remaining =
                     QStringLiteral(
-                        "%1 explain%2 %3 of the positioning residual (%4 → %5 µm RMS); the "
-                        "rest, against %6 µm reading noise: %7")
+                        "%1 explain%2 %3 of the positioning residual (%4 → %5 µm RMS), %6 "
+                        "of its structure above the noise; the rest, against %7 µm reading "
+                        "noise: %8")
                         .arg(result.causes.join(QStringLiteral(" and ")),
                              result.causes.size() > 1 ? QString() : QStringLiteral("s"),
                              percent(positioningExplained))
                         .arg(result.base_test.error_rms_um, 0, 'f', 2)
                         .arg(adopted->test_summary.error_rms_um, 0, 'f', 2)
+                        .arg(percent(result.structure_explained))
                         .arg(adopted->test_summary.error_noise_um, 0, 'f', 2)
                         .arg(describeStructure(adopted->test, test.runs));
         } else if (result.base_test.atNoiseLevel()) {

@@ -59,7 +59,8 @@ struct Finding {
     /// The effect's own fitted parameters, in its order.
     std::vector<std::pair<QString, models::Parameter>> parameters;
     /// The probability that the held-out gain is real and larger than every
-    /// other candidate's of the same step (see rank in Diagnosis.cpp).
+    /// other candidate's of the same step (see rank in Diagnosis.cpp); for a
+    /// cause named, times the share of the structure the causes explain.
     double confidence = 0;
     bool significant = false;
     double bic_drop = 0;  ///< on the training runs, of the gain's quantity
@@ -87,6 +88,10 @@ struct DiagnosisResult {
     /// With a cause: what the adopted extension leaves when it is more than
     /// noise, where it sits and what it follows.
     QString remaining;
+    /// With a cause: the share of the positioning structure above the reading
+    /// noise that the causes explain (structureExplained); it scales their
+    /// confidences.
+    double structure_explained = 0;
     /// The base residuals on the test runs (for the residual map).
     std::vector<models::ReadingResiduals> base_residuals;
 };

@@ -81,6 +81,17 @@ bool ResidualSummary::atNoiseLevel(double tolerance) const {
     return positioning && temperature;
 }
 
+double structureExplained(const ResidualSummary& before, const ResidualSummary& after) {
+    // A base residual within the noise level has no positioning structure to
+    // explain (a sensor's effect): its share would be a ratio of noise.
+    if (!(before.error_rms_um > kNoiseLevelTolerance * after.error_noise_um)) return 1;
+    const double structure2 =
+        before.error_rms_um * before.error_rms_um - after.error_noise_um * after.error_noise_um;
+    const double explained2 =
+        before.error_rms_um * before.error_rms_um - after.error_rms_um * after.error_rms_um;
+    return std::clamp(explained2 / structure2, 0.0, 1.0);
+}
+
 ResidualSummary summarise(const std::vector<models::ReadingResiduals>& residuals,
                           const std::vector<models::RunData>& runs) {
     ResidualSummary s;

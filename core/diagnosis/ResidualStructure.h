@@ -28,6 +28,9 @@ double temperatureNoise_K(const std::vector<double>& values);
 double residualNoise_K(const std::vector<models::ReadingResiduals>& residuals,
                        const QString& channel);
 
+/// A residual within this many times its noise estimate is at noise level.
+constexpr double kNoiseLevelTolerance = 1.5;
+
 struct ResidualSummary {
     double error_rms_um = 0, error_peak_um = 0;
     double temperature_rms_K = 0;  ///< over all screw sensors
@@ -36,8 +39,14 @@ struct ResidualSummary {
     double worst_channel_noise_K = 0;
     double error_noise_um = 0;
     /// Residual at noise level (within `tolerance` × the noise estimates).
-    bool atNoiseLevel(double tolerance = 1.5) const;
+    bool atNoiseLevel(double tolerance = kNoiseLevelTolerance) const;
 };
+
+/// The share of the positioning structure, the mean square above the reading
+/// noise, that a model explains: (before² − after²) / (before² − noise²) in
+/// [0, 1]; 1 when it leaves no more than the noise, or when `before` is at
+/// noise level in positioning (kNoiseLevelTolerance: a sensor's effect).
+double structureExplained(const ResidualSummary& before, const ResidualSummary& after);
 
 ResidualSummary summarise(const std::vector<models::ReadingResiduals>& residuals,
                           const std::vector<models::RunData>& runs);

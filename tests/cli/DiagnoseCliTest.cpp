@@ -45,6 +45,12 @@ TEST(DiagnoseCli, findsAHiddenSensorLagAndKeepsTheExtension) {
     EXPECT_EQ(best[QStringLiteral("cause")].toString(), QStringLiteral("sensor_lag:T_nut"));
     EXPECT_NEAR(best[QStringLiteral("parameters")][QStringLiteral("tau")].toDouble(), 400, 60);
     EXPECT_GT(best[QStringLiteral("confidence")].toDouble(), 0.5);
+    // The named cause's confidence keeps the share of the positioning
+    // structure above the noise that it explains: at most that share.
+    const double share = d[QStringLiteral("structure_explained")].toDouble(-1);
+    EXPECT_GE(share, 0);
+    EXPECT_LE(share, 1);
+    EXPECT_LE(best[QStringLiteral("confidence")].toDouble(), share);
     EXPECT_TRUE(best[QStringLiteral("evidence")].toString().contains(QStringLiteral("T_nut")));
     // A sensor effect's gain is on that sensor's temperature; both quantities
     // are there, and the reduction is the one their figures give.

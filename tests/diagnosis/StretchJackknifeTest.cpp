@@ -1,12 +1,14 @@
 // The statistics behind a diagnosis's confidence: Student's t against its
 // tables, stretches of a run in time order, and the probability that one
 // held-out gain beats another, checked for calibration where the truth is
-// known (many draws of stretches whose true gains are equal, or differ).
+// known (many draws of stretches whose true gains are equal, or differ), and
+// the share of the structure a named cause explains, which scales its confidence.
 #include <gtest/gtest.h>
 
 #include <iostream>
 #include <random>
 
+#include "core/diagnosis/ResidualStructure.h"
 #include "core/diagnosis/StretchJackknife.h"
 
 using namespace driftlab;
@@ -103,4 +105,21 @@ TEST(StretchJackknife, theProbabilityIsCalibratedWhereTheTruthIsKnown) {
     EXPECT_NEAR(double(above90) / draws, 0.10, 0.025);
     EXPECT_NEAR(double(above50) / draws, 0.50, 0.04);
     EXPECT_GT(double(betterFound) / draws, 0.8);
+}
+
+TEST(StructureExplained, isTheShareOfTheMeanSquareAboveTheNoise) {
+    // 2 µm RMS before, 1 µm reading noise: 3 µm² of structure. Leaving 1.5 µm
+    // explains 4 − 2.25 = 1.75 µm² of it; leaving the noise explains all.
+    diagnosis::ResidualSummary before, after;
+    before.error_rms_um = 2;
+    after.error_noise_um = 1;
+    after.error_rms_um = 1.5;
+    EXPECT_NEAR(diagnosis::structureExplained(before, after), 1.75 / 3, 1e-12);
+    after.error_rms_um = 0.9;  // below the noise: nothing left to explain
+    EXPECT_DOUBLE_EQ(diagnosis::structureExplained(before, after), 1);
+    after.error_rms_um = 2.1;  // worse than the base model
+    EXPECT_DOUBLE_EQ(diagnosis::structureExplained(before, after), 0);
+    before.error_rms_um = 1.45;  // the base at noise level: a sensor's effect
+    after.error_rms_um = 1.5;
+    EXPECT_DOUBLE_EQ(diagnosis::structureExplained(before, after), 1);
 }
