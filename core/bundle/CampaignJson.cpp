@@ -3,6 +3,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QSet>
+#include <algorithm>
 
 #include "core/bundle/BundleError.h"
 
@@ -127,6 +128,28 @@ Screw readScrew(ObjectReader r) {
     s.specific_heat_J_kgK =
         r.positiveOr(QStringLiteral("specific_heat_J_kgK"), s.specific_heat_J_kgK);
     s.conductivity_W_mK = r.positiveOr(QStringLiteral("conductivity_W_mK"), s.conductivity_W_mK);
+    // What no feed-axis screw can be: a value in another unit (m for mm,
+    // g/cm³ for kg/m³, kJ for J), which the models would take at its word.
+    const struct {
+        const char* key;
+        double value, low, high;
+        const char* unit;
+    } limits[] = {
+        {"length_mm", s.length_mm, 20, 30000, "mm"},
+        {"diameter_mm", s.diameter_mm, 2, 500, "mm"},
+        {"lead_mm", s.lead_mm, 0.5, 200, "mm"},
+        {"density_kg_m3", s.density_kg_m3, 1000, 25000, "kg/m³"},
+        {"specific_heat_J_kgK", s.specific_heat_J_kgK, 100, 5000, "J/(kg·K)"},
+        {"conductivity_W_mK", s.conductivity_W_mK, 0.1, 1000, "W/(m·K)"},
+    };
+    for (const auto& l : limits)
+        if (l.value < l.low || l.value > l.high)
+            r.fail(QLatin1String(l.key),
+                   QStringLiteral("%1 %2 is no ball screw's (%3…%4 %2): another unit?")
+                       .arg(l.value)
+                       .arg(QString::fromUtf8(l.unit))
+                       .arg(l.low)
+                       .arg(l.high));
     s.extra = r.rest();
     return s;
 }
@@ -189,7 +212,11 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName) {
         QByteArray before = json.left(parseError.offset);
         int line = int(before.count('\n')) + 1;
         int column = int(parseError.offset - (before.lastIndexOf('\n') + 1)) + 1;
-        throw BundleException({fileName, line, column, parseError.errorString()});
+        const bool comment = json.mid(std::max(0, int(parseError.offset) - 2), 4).contains('/');
+        throw BundleException(
+            {fileName, line, column,
+             parseError.errorString() +
+                 (comment ? QStringLiteral(" (JSON has no comments)") : QString())});
     }
     if (!doc.isObject())
         throw BundleException({fileName, 1, 1, QStringLiteral("expected a JSON object")});
@@ -212,6 +239,10 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName) {
     if (r.has(QStringLiteral("screw"))) c.screw = readScrew(r.object(QStringLiteral("screw")));
     if (r.has(QStringLiteral("nut_length_mm")))
         c.nut_length_mm = r.positive(QStringLiteral("nut_length_mm"));
+    if (c.nut_length_mm && (*c.nut_length_mm < 5 || *c.nut_length_mm > 1000))
+        r.fail(QStringLiteral("nut_length_mm"),
+               QStringLiteral("%1 mm is no ball-screw nut's length (5…1000 mm): another unit?")
+                   .arg(*c.nut_length_mm));
     c.travel_mm = r.optionalRange(QStringLiteral("travel_mm"));
     if (r.has(QStringLiteral("interferometer"))) {
         ObjectReader i = r.object(QStringLiteral("interferometer"));

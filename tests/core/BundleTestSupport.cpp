@@ -119,6 +119,31 @@ const std::vector<BadBundleCase>& badBundleCases() {
                            "\"name\": \"VMC-850\",,");
          },
          "campaign.json:5:", ""},
+        {"json_with_a_comment",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"name\": \"VMC-850\",",
+                           "\"name\": \"VMC-850\", // the test bench");
+         },
+         "campaign.json:5:", "(JSON has no comments)"},
+        {"screw_diameter_in_metres",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"diameter_mm\": 40,",
+                           "\"diameter_mm\": 0.04,");
+         },
+         "campaign.json",
+         "screw.diameter_mm: 0.04 mm is no ball screw's (2…500 mm): another unit?"},
+        {"density_in_g_per_cm3",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"density_kg_m3\": 7850,",
+                           "\"density_kg_m3\": 7.85,");
+         },
+         "campaign.json", "screw.density_kg_m3: 7.85 kg/m³ is no ball screw's"},
+        {"nut_length_in_metres",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"nut_length_mm\": 80,",
+                           "\"nut_length_mm\": 0.08,");
+         },
+         "campaign.json", "nut_length_mm: 0.08 mm is no ball-screw nut's length"},
         {"unknown_quantity",
          [=](const QString& d) {
              replaceInFile(file(d, "campaign.json"), "\"quantity\": \"speed\"",
