@@ -280,7 +280,7 @@ private:
         const QStringList expected{QStringLiteral("run"),   QStringLiteral("start_s"),
                                    QStringLiteral("end_s"), QStringLiteral("from_mm"),
                                    QStringLiteral("to_mm"), QStringLiteral("feed_mm_min")};
-        const std::vector<int> c = requireExactly(csv, expected);
+        const std::vector<int> c = csv.requireExactly(expected);
         Overrun overrun;
         while (csv.next()) {
             Run& run = m_campaign.runs[runOf(csv, c[0])];
@@ -314,7 +314,7 @@ private:
         const QStringList expected{QStringLiteral("run"),       QStringLiteral("time_s"),
                                    QStringLiteral("cycle"),     QStringLiteral("target_mm"),
                                    QStringLiteral("direction"), QStringLiteral("deviation_um")};
-        const std::vector<int> c = requireExactly(csv, expected);
+        const std::vector<int> c = csv.requireExactly(expected);
         Overrun overrun;
         while (csv.next()) {
             Run& run = m_campaign.runs[runOf(csv, c[0])];
@@ -343,19 +343,10 @@ private:
             run.positioning.push_back(p);
         }
         warnOverrun(kPositioningFile, overrun);
+        for (const Run& run : m_campaign.runs)
+            if (const auto why = tinyDeviations(run.positioning))
+                warnings << QStringLiteral("%1: run '%2': %3").arg(kPositioningFile, run.id, *why);
         reportProgress(csv, 0.1, 0.1);
-    }
-
-    /// The file must have exactly these columns (any order); returns their indices.
-    static std::vector<int> requireExactly(const CsvTable& csv, const QStringList& expected) {
-        std::vector<int> indices;
-        for (const QString& name : expected) indices.push_back(csv.requireColumn(name));
-        for (std::size_t i = 0; i < csv.header().size(); ++i)
-            if (!expected.contains(csv.header()[i]))
-                throw BundleException({csv.fileName(), 1, int(i) + 1,
-                                       QStringLiteral("unknown column '%1' (expected %2)")
-                                           .arg(csv.header()[i], expected.join(QLatin1Char(',')))});
-        return indices;
     }
 
     const BundleSource& m_source;

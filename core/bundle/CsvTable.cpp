@@ -92,6 +92,17 @@ int CsvTable::requireColumn(const QString& name) const {
     return c;
 }
 
+std::vector<int> CsvTable::requireExactly(const QStringList& expected) const {
+    std::vector<int> indices;
+    for (const QString& name : expected) indices.push_back(requireColumn(name));
+    for (std::size_t i = 0; i < m_header.size(); ++i)
+        if (!expected.contains(m_header[i]))
+            throw BundleException({m_fileName, 1, int(i) + 1,
+                                   QStringLiteral("unknown column '%1' (expected %2)")
+                                       .arg(m_header[i], expected.join(QLatin1Char(',')))});
+    return indices;
+}
+
 std::string_view CsvTable::field(int column) const {
     const std::size_t begin = column == 0 ? 0 : m_ends[std::size_t(column) - 1];
     return std::string_view(m_text).substr(begin, m_ends[std::size_t(column)] - begin);

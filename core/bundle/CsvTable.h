@@ -8,6 +8,7 @@
 // Every error names file, line and column.
 
 #include <QString>
+#include <QStringList>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -35,6 +36,9 @@ public:
     int column(const QString& name) const;
     /// Index of a header column; throws naming the file if absent.
     int requireColumn(const QString& name) const;
+    /// The file must have exactly these columns, in any order: their indices;
+    /// throws naming a missing or an unknown column.
+    std::vector<int> requireExactly(const QStringList& expected) const;
     /// True when the file is ';'-separated with decimal commas.
     bool europeanFormat() const { return m_delimiter == ';'; }
     /// How the file departs from plain ','-separated CSV, as a reader should

@@ -2,6 +2,7 @@
 
 #include <QRegularExpression>
 #include <QStringList>
+#include <algorithm>
 #include <cmath>
 
 namespace driftlab {
@@ -78,6 +79,20 @@ std::optional<QString> impossibleDeviation(double deviation_um) {
             .arg(number(deviation_um))
             .arg(number(kMaxDisplacementUm));
     return std::nullopt;
+}
+
+std::optional<QString> tinyDeviations(const std::vector<PositioningMeasurement>& readings) {
+    constexpr double kTinyUm = 0.1;
+    double largest_um = 0;
+    for (const PositioningMeasurement& p : readings)
+        largest_um = std::max(largest_um, std::abs(p.deviation_um));
+    if (readings.size() < 10 || largest_um >= kTinyUm) return std::nullopt;
+    return QStringLiteral(
+               "all %1 deviations are within ±%2 µm (largest %3 µm): mm instead of µm? No "
+               "axis is that exact; DriftLab reads deviation_um in µm")
+        .arg(readings.size())
+        .arg(number(kTinyUm))
+        .arg(number(largest_um));
 }
 
 std::optional<QString> impossibleTime(double time_s) {

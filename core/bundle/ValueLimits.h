@@ -5,8 +5,10 @@
 
 #include <QString>
 #include <optional>
+#include <vector>
 
 #include "core/domain/Channel.h"
+#include "core/domain/Run.h"
 
 namespace driftlab {
 
@@ -20,6 +22,10 @@ std::optional<QString> impossibleValue(Quantity quantity, double value);
 std::optional<QString> impossibleAxisValue(const QString& column, double value);
 /// An interferometer deviation in µm: within ±10 mm.
 std::optional<QString> impossibleDeviation(double deviation_um);
+/// A run's positioning readings all within ±0.1 µm, ten or more of them: no
+/// axis is that exact (an interferometer resolves about 0.001 µm, an axis errs
+/// by microns), so they look like mm. Merely unusual: a warning, not an error.
+std::optional<QString> tinyDeviations(const std::vector<PositioningMeasurement>& readings);
 /// A time in s since the run's start: within ±1e7 s (four months).
 std::optional<QString> impossibleTime(double time_s);
 

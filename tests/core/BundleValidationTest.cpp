@@ -56,3 +56,31 @@ TEST(BundleReader, expansionCoefficientInPpmIsAUnitMixUp) {
         QStringLiteral("campaign.json: screw.alpha_per_K: 11.5 per K")))
         << qPrintable(result.error->toString());
 }
+
+TEST(BundleReader, deviationsInMillimetresAreReadWithAWarning) {
+    // An export in mm: 0.93 µm written as 0.00093. Each value is possible,
+    // so nothing is refused, but a whole run within ±0.1 µm is no real axis.
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    const QString positioning = dir.filePath(QStringLiteral("positioning.csv"));
+    QList<QByteArray> lines = readFile(positioning).split('\n');
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        const qsizetype comma = lines[i].lastIndexOf(',');
+        if (comma < 0) continue;
+        lines[i] = lines[i].left(comma + 1) +
+                   QByteArray::number(lines[i].mid(comma + 1).toDouble() / 1000, 'g', 12);
+    }
+    writeFile(positioning, lines.join('\n'));
+    const BundleReadResult result = readBundle(dir.path());
+    ASSERT_TRUE(result.ok());
+    EXPECT_TRUE(
+        result.warnings.join(QLatin1Char('\n'))
+            .contains(QStringLiteral("positioning.csv: run 'S1': all 154 deviations are "
+                                     "within ±0.1 µm (largest 0.03498 µm): mm instead of µm?")))
+        << qPrintable(result.warnings.join(QLatin1Char('\n')));
+    // The example as written, in µm, gets no such warning.
+    copyBundle(exampleBundlePath(), dir.filePath(QStringLiteral("plain")));
+    const BundleReadResult plain = readBundle(dir.filePath(QStringLiteral("plain")));
+    ASSERT_TRUE(plain.ok());
+    EXPECT_FALSE(plain.warnings.join(QLatin1Char('\n')).contains(QStringLiteral("mm instead")));
+}
