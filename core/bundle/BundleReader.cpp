@@ -155,7 +155,7 @@ private:
         const int runCol = csv.requireColumn(QStringLiteral("run"));
         const int timeCol = csv.requireColumn(QStringLiteral("time_s"));
         std::vector<int> dataCols;
-        std::vector<std::optional<Quantity>> quantities;  // nothing for axis columns
+        std::vector<const Channel*> channels;  // nullptr for axis columns
         for (std::size_t i = 0; i < csv.header().size(); ++i) {
             if (int(i) == runCol || int(i) == timeCol) continue;
             const Channel* channel = sampleChannel(csv, int(i));
@@ -166,7 +166,7 @@ private:
                                        QStringLiteral("column '%1' is channel '%2' again")
                                            .arg(csv.header()[i], name)});
             dataCols.push_back(int(i));
-            quantities.push_back(channel ? std::optional(channel->quantity) : std::nullopt);
+            channels.push_back(channel);
             m_campaign.sample_columns.push_back(name);
         }
         const int positionCol = csv.column(kPositionColumn);
@@ -220,8 +220,8 @@ private:
                 const double v = row[k] = csv.numberOrMissing(column);
                 if (std::isnan(v)) continue;
                 anyValue = true;
-                if (quantities[k])
-                    check(csv, column, impossibleValue(*quantities[k], v));
+                if (const Channel* channel = channels[k])
+                    check(csv, column, impossibleValue(channel->quantity, v, channel->role));
                 else if (column == positionCol)
                     checkPosition(csv, column, v, overrun);
                 else

@@ -11,6 +11,7 @@ namespace {
 constexpr double kMinTemperatureC = -60.0;
 constexpr double kMaxTemperatureC = 300.0;
 constexpr double kKelvinSuspectC = 200.0;
+constexpr double kMaxRoomC = 45.0;
 constexpr double kMaxDisplacementUm = 10'000.0;
 constexpr double kMaxSpeedRpm = 200'000.0;
 constexpr double kMaxFeedMmMin = 1'000'000.0;
@@ -23,7 +24,7 @@ QString number(double value) {
 
 }  // namespace
 
-std::optional<QString> impossibleValue(Quantity quantity, double value) {
+std::optional<QString> impossibleValue(Quantity quantity, double value, ChannelRole role) {
     switch (quantity) {
         case Quantity::Temperature:
             if (value < kMinTemperatureC || value > kMaxTemperatureC)
@@ -41,6 +42,12 @@ std::optional<QString> impossibleValue(Quantity quantity, double value) {
                            "%1 °C looks like kelvin (no part of a feed axis runs that hot); "
                            "DriftLab expects °C")
                     .arg(number(value));
+            if ((role == ChannelRole::Ambient || role == ChannelRole::Air) && value > kMaxRoomC)
+                return QStringLiteral(
+                           "%1 °C is no room's or air's temperature in a machine-tool lab "
+                           "(at most %2 °C): °F? DriftLab expects °C")
+                    .arg(number(value))
+                    .arg(number(kMaxRoomC));
             return std::nullopt;
         case Quantity::Displacement:
             if (std::abs(value) > kMaxDisplacementUm)

@@ -16,7 +16,10 @@ namespace driftlab {
 /// Temperatures must lie in −60…300 °C, and a reading above 200 °C is taken
 /// for kelvin (no part of a feed axis runs that hot; 273–330 K is a lab's
 /// range); displacements within ±10 mm (given in µm); speeds within ±200 000 rpm.
-std::optional<QString> impossibleValue(Quantity quantity, double value);
+/// A room or air sensor (`role` ambient or air) reads at most 45 °C: no
+/// machine-tool lab is hotter, and a room logged in °F reads 60–90.
+std::optional<QString> impossibleValue(Quantity quantity, double value,
+                                       ChannelRole role = ChannelRole::Other);
 /// The same for the axis columns of samples.csv (position_mm is checked
 /// against the screw instead: see BundleReader).
 std::optional<QString> impossibleAxisValue(const QString& column, double value);

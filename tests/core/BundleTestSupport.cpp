@@ -250,6 +250,21 @@ const std::vector<BadBundleCase>& badBundleCases() {
              writeFile(file(d, "samples.csv"), lines.join('\n'));
          },
          "samples.csv:2:3", "looks like kelvin"},
+        {"room_in_fahrenheit",
+         [=](const QString& d) {
+             QByteArray csv = readFile(file(d, "samples.csv"));
+             QList<QByteArray> lines = csv.split('\n');
+             for (qsizetype i = 1; i < lines.size(); ++i) {
+                 QList<QByteArray> f = lines[i].split(',');
+                 if (f.size() > 5 && !f[5].isEmpty())  // T_ambient, role ambient
+                     f[5] = QByteArray::number(f[5].toDouble() * 1.8 + 32, 'f', 2);
+                 lines[i] = f.join(',');
+             }
+             writeFile(file(d, "samples.csv"), lines.join('\n'));
+         },
+         "samples.csv:2:6",
+         "column 'T_ambient': 68.02 °C is no room's or air's temperature in a machine-tool lab "
+         "(at most 45 °C): °F?"},
         // Issue 9: the kelvin check works per value, not on the median.
         {"one_kelvin_reading_among_celsius",
          [=](const QString& d) {
