@@ -212,7 +212,8 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName) {
         QByteArray before = json.left(parseError.offset);
         int line = int(before.count('\n')) + 1;
         int column = int(parseError.offset - (before.lastIndexOf('\n') + 1)) + 1;
-        const bool comment = json.mid(std::max(0, int(parseError.offset) - 2), 4).contains('/');
+        const QByteArray at = json.mid(std::max(0, int(parseError.offset) - 2), 4);
+        const bool comment = at.contains("//") || at.contains("/*");
         throw BundleException(
             {fileName, line, column,
              parseError.errorString() +
