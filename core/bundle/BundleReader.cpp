@@ -181,6 +181,7 @@ private:
         // devices logged at one instant, or the log written twice) is merged.
         std::vector<HeldRow> held(m_campaign.runs.size());
         std::vector<std::optional<double>> offset_s(held.size());  // set by a run's first row
+        DisplacementExtents extents(held.size(), channels);
         const auto store = [&](std::size_t r) {
             HeldRow& h = held[r];
             if (!h.held) return;
@@ -220,9 +221,10 @@ private:
                 const double v = row[k] = csv.numberOrMissing(column);
                 if (std::isnan(v)) continue;
                 anyValue = true;
-                if (const Channel* channel = channels[k])
+                if (const Channel* channel = channels[k]) {
                     check(csv, column, impossibleValue(channel->quantity, v, channel->role));
-                else if (column == positionCol)
+                    extents.add(runIndex, k, v);
+                } else if (column == positionCol)
                     checkPosition(csv, column, v, overrun);
                 else
                     check(csv, column, impossibleAxisValue(csv.header()[column], v));
@@ -256,6 +258,8 @@ private:
                             .arg(firstEmptyRowLine)
                             .arg(emptyRows);
         warnOverrun(kSamplesFile, overrun);
+        for (const QString& w : extents.warnings(m_campaign.runs))
+            warnings << kSamplesFile + QStringLiteral(": ") + w;
     }
 
     /// Runs logged on a logger's clock are counted from their first record,
@@ -343,9 +347,14 @@ private:
             run.positioning.push_back(p);
         }
         warnOverrun(kPositioningFile, overrun);
-        for (const Run& run : m_campaign.runs)
-            if (const auto why = tinyDeviations(run.positioning))
+        for (const Run& run : m_campaign.runs) {
+            double largest_um = 0;
+            for (const PositioningMeasurement& p : run.positioning)
+                largest_um = std::max(largest_um, std::abs(p.deviation_um));
+            if (const auto why = tinyMicrometres(run.positioning.size(), largest_um,
+                                                 QStringLiteral("deviations")))
                 warnings << QStringLiteral("%1: run '%2': %3").arg(kPositioningFile, run.id, *why);
+        }
         reportProgress(csv, 0.1, 0.1);
     }
 

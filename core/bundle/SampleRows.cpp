@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/bundle/ValueLimits.h"
+
 namespace driftlab {
 
 void mergeInto(HeldRow& held, const std::vector<double>& row, const CsvTable& csv,
@@ -23,6 +25,31 @@ void mergeInto(HeldRow& held, const std::vector<double>& row, const CsvTable& cs
                          .arg(held.line));
         }
     }
+}
+
+DisplacementExtents::DisplacementExtents(std::size_t runs,
+                                         const std::vector<const Channel*>& columns)
+    : m_columns(columns),
+      m_extent(runs, std::vector<std::pair<std::size_t, double>>(columns.size())) {}
+
+void DisplacementExtents::add(std::size_t run, std::size_t k, double value) {
+    if (!m_columns[k] || m_columns[k]->quantity != Quantity::Displacement) return;
+    auto& [count, largest] = m_extent[run][k];
+    ++count;
+    largest = std::max(largest, std::abs(value));
+}
+
+QStringList DisplacementExtents::warnings(const std::vector<Run>& runs) const {
+    QStringList warnings;
+    for (std::size_t r = 0; r < m_extent.size(); ++r)
+        for (std::size_t k = 0; k < m_columns.size(); ++k) {
+            const auto& [count, largest] = m_extent[r][k];
+            const QString what =
+                QStringLiteral("readings of '%1'").arg(m_columns[k] ? m_columns[k]->id : QString());
+            if (const auto why = tinyMicrometres(count, largest, what))
+                warnings << QStringLiteral("run '%1': %2").arg(runs[r].id, *why);
+        }
+    return warnings;
 }
 
 double loggerClockOffset_s(const Run& run, double firstSample_s) {

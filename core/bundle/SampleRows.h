@@ -2,13 +2,17 @@
 // How samples.csv's rows of a run are taken as other loggers write them: two
 // rows at one time are one instant (two devices merged row by row, or a log
 // written twice), and a run whose every file starts long after 0 was logged on
-// a logger's clock.
+// a logger's clock; and a drift probe whose every reading is a few nm was
+// logged in mm.
 
 #include <QString>
+#include <QStringList>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/bundle/CsvTable.h"
+#include "core/domain/Channel.h"
 #include "core/domain/Run.h"
 
 namespace driftlab {
@@ -25,6 +29,22 @@ struct HeldRow {
 /// both give must agree: one instant has one reading (else csv.fail).
 void mergeInto(HeldRow& held, const std::vector<double>& row, const CsvTable& csv,
                const std::vector<int>& columns, const QString& run);
+
+/// Per run, how many readings each displacement column of samples.csv has and
+/// the largest |value|: a drift probe logged in mm (tinyMicrometres).
+class DisplacementExtents {
+public:
+    DisplacementExtents(std::size_t runs, const std::vector<const Channel*>& columns);
+    /// One reading of column `k` (an index into `columns`) in run `run`.
+    void add(std::size_t run, std::size_t k, double value);
+    /// One warning per run and column that looks like mm.
+    QStringList warnings(const std::vector<Run>& runs) const;
+
+private:
+    std::vector<const Channel*> m_columns;
+    std::vector<std::vector<std::pair<std::size_t, double>>>
+        m_extent;  ///< [run][k]: count, largest
+};
 
 /// A run whose first record in every file (sample, motion segment, positioning
 /// reading) is later than this was logged on a logger's clock: time since the

@@ -88,18 +88,14 @@ std::optional<QString> impossibleDeviation(double deviation_um) {
     return std::nullopt;
 }
 
-std::optional<QString> tinyDeviations(const std::vector<PositioningMeasurement>& readings) {
+std::optional<QString> tinyMicrometres(std::size_t count, double largest_um, const QString& what) {
     constexpr double kTinyUm = 0.1;
-    double largest_um = 0;
-    for (const PositioningMeasurement& p : readings)
-        largest_um = std::max(largest_um, std::abs(p.deviation_um));
-    if (readings.size() < 10 || largest_um >= kTinyUm) return std::nullopt;
+    if (count < 10 || largest_um >= kTinyUm) return std::nullopt;
     return QStringLiteral(
-               "all %1 deviations are within ±%2 µm (largest %3 µm): mm instead of µm? No "
-               "axis is that exact; DriftLab reads deviation_um in µm")
-        .arg(readings.size())
-        .arg(number(kTinyUm))
-        .arg(number(largest_um));
+               "all %1 %2 are within ±%3 µm (largest %4 µm): mm instead of µm? Nothing on a "
+               "machine tool is that steady; DriftLab reads them in µm")
+        .arg(count)
+        .arg(what, number(kTinyUm), number(largest_um));
 }
 
 std::optional<QString> impossibleTime(double time_s) {

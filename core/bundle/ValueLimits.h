@@ -25,10 +25,12 @@ std::optional<QString> impossibleValue(Quantity quantity, double value,
 std::optional<QString> impossibleAxisValue(const QString& column, double value);
 /// An interferometer deviation in µm: within ±10 mm.
 std::optional<QString> impossibleDeviation(double deviation_um);
-/// A run's positioning readings all within ±0.1 µm, ten or more of them: no
-/// axis is that exact (an interferometer resolves about 0.001 µm, an axis errs
-/// by microns), so they look like mm. Merely unusual: a warning, not an error.
-std::optional<QString> tinyDeviations(const std::vector<PositioningMeasurement>& readings);
+/// `count` readings in µm, ten or more, all within ±0.1 µm (`largest_um`):
+/// no axis or drift probe is that steady (an interferometer or a probe
+/// resolves about 0.001 µm, thermal errors are microns), so they look like mm.
+/// Merely unusual: a warning, not an error. `what`: "deviations", "readings
+/// of 'D_x'".
+std::optional<QString> tinyMicrometres(std::size_t count, double largest_um, const QString& what);
 /// A time in s since the run's start: within ±1e7 s (four months).
 std::optional<QString> impossibleTime(double time_s);
 

@@ -84,3 +84,26 @@ TEST(BundleReader, deviationsInMillimetresAreReadWithAWarning) {
     ASSERT_TRUE(plain.ok());
     EXPECT_FALSE(plain.warnings.join(QLatin1Char('\n')).contains(QStringLiteral("mm instead")));
 }
+
+TEST(BundleReader, aDriftProbeInMillimetresIsReadWithAWarning) {
+    // The spindle run's x probe exported in mm: 1.2 µm written as 0.0012.
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    const QString samples = dir.filePath(QStringLiteral("samples.csv"));
+    QList<QByteArray> lines = readFile(samples).split('\n');
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        QList<QByteArray> f = lines[i].split(',');
+        if (f.size() > 10 && f[0] == "SP1" && !f[10].isEmpty())  // D_x
+            f[10] = QByteArray::number(f[10].toDouble() / 1000, 'g', 12);
+        lines[i] = f.join(',');
+    }
+    writeFile(samples, lines.join('\n'));
+    const BundleReadResult result = readBundle(dir.path());
+    ASSERT_TRUE(result.ok());
+    const QString warnings = result.warnings.join(QLatin1Char('\n'));
+    EXPECT_TRUE(
+        warnings.contains(QStringLiteral("samples.csv: run 'SP1': all 181 readings of "
+                                         "'D_x' are within ±0.1 µm")))
+        << qPrintable(warnings);
+    EXPECT_FALSE(warnings.contains(QStringLiteral("'D_y'"))) << qPrintable(warnings);
+}
