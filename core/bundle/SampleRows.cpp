@@ -32,13 +32,6 @@ DisplacementExtents::DisplacementExtents(std::size_t runs,
     : m_columns(columns),
       m_extent(runs, std::vector<std::pair<std::size_t, double>>(columns.size())) {}
 
-void DisplacementExtents::add(std::size_t run, std::size_t k, double value) {
-    if (!m_columns[k] || m_columns[k]->quantity != Quantity::Displacement) return;
-    auto& [count, largest] = m_extent[run][k];
-    ++count;
-    largest = std::max(largest, std::abs(value));
-}
-
 QStringList DisplacementExtents::warnings(const std::vector<Run>& runs) const {
     QStringList warnings;
     for (std::size_t r = 0; r < m_extent.size(); ++r)

@@ -7,6 +7,8 @@
 
 #include <QString>
 #include <QStringList>
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -35,8 +37,14 @@ void mergeInto(HeldRow& held, const std::vector<double>& row, const CsvTable& cs
 class DisplacementExtents {
 public:
     DisplacementExtents(std::size_t runs, const std::vector<const Channel*>& columns);
-    /// One reading of column `k` (an index into `columns`) in run `run`.
-    void add(std::size_t run, std::size_t k, double value);
+    /// One reading of channel column `k` (an index into `columns`, not null) in run `run`:
+    /// inline, it is called for every cell of a channel.
+    void add(std::size_t run, std::size_t k, double value) {
+        if (m_columns[k]->quantity != Quantity::Displacement) return;
+        auto& [count, largest] = m_extent[run][k];
+        ++count;
+        largest = std::max(largest, std::abs(value));
+    }
     /// One warning per run and column that looks like mm.
     QStringList warnings(const std::vector<Run>& runs) const;
 
