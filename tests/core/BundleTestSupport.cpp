@@ -47,6 +47,19 @@ void replaceInFile(const QString& path, const QByteArray& what, const QByteArray
     writeFile(path, content);
 }
 
+void rewriteColumn(const QString& path, int column, const std::function<QByteArray(double)>& f,
+                   const QByteArray& run) {
+    QList<QByteArray> lines = readFile(path).split('\n');
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        QList<QByteArray> cells = lines[i].split(',');
+        if (cells.size() <= column || cells[column].isEmpty()) continue;
+        if (!run.isEmpty() && cells[0] != run) continue;
+        cells[column] = f(cells[column].toDouble());
+        lines[i] = cells.join(',');
+    }
+    writeFile(path, lines.join('\n'));
+}
+
 QByteArray sha256OfFile(const QString& path) {
     return QCryptographicHash::hash(readFile(path), QCryptographicHash::Sha256).toHex();
 }
@@ -239,28 +252,14 @@ const std::vector<BadBundleCase>& badBundleCases() {
          "positioning.csv:3:5", "direction must be + or -, found 'up'"},
         {"kelvin_temperatures",
          [=](const QString& d) {
-             QByteArray csv = readFile(file(d, "samples.csv"));
-             QList<QByteArray> lines = csv.split('\n');
-             for (qsizetype i = 1; i < lines.size(); ++i) {
-                 QList<QByteArray> f = lines[i].split(',');
-                 if (f.size() > 2 && !f[2].isEmpty())
-                     f[2] = QByteArray::number(f[2].toDouble() + 273.15);
-                 lines[i] = f.join(',');
-             }
-             writeFile(file(d, "samples.csv"), lines.join('\n'));
+             rewriteColumn(file(d, "samples.csv"), 2,
+                           [](double c) { return QByteArray::number(c + 273.15); });
          },
          "samples.csv:2:3", "looks like kelvin"},
         {"room_in_fahrenheit",
          [=](const QString& d) {
-             QByteArray csv = readFile(file(d, "samples.csv"));
-             QList<QByteArray> lines = csv.split('\n');
-             for (qsizetype i = 1; i < lines.size(); ++i) {
-                 QList<QByteArray> f = lines[i].split(',');
-                 if (f.size() > 5 && !f[5].isEmpty())  // T_ambient, role ambient
-                     f[5] = QByteArray::number(f[5].toDouble() * 1.8 + 32, 'f', 2);
-                 lines[i] = f.join(',');
-             }
-             writeFile(file(d, "samples.csv"), lines.join('\n'));
+             rewriteColumn(file(d, "samples.csv"), 5,  // T_ambient, role ambient
+                           [](double c) { return QByteArray::number(c * 1.8 + 32, 'f', 2); });
          },
          "samples.csv:2:6",
          "column 'T_ambient': 68.02 °C is no room's or air's temperature in a machine-tool lab "

@@ -22,6 +22,10 @@ QByteArray readFile(const QString& path);
 void writeFile(const QString& path, const QByteArray& content);
 /// Replaces the first occurrence of `what` in a file; fails the test if absent.
 void replaceInFile(const QString& path, const QByteArray& what, const QByteArray& with);
+/// Rewrites the cell in `column` of every data line of a CSV file (of run
+/// `run` only, when given) as `f` of its value: a unit another tool wrote.
+void rewriteColumn(const QString& path, int column, const std::function<QByteArray(double)>& f,
+                   const QByteArray& run = {});
 QByteArray sha256OfFile(const QString& path);
 
 /// A moving-state campaign with `rows` sample times of five temperature

@@ -62,15 +62,8 @@ TEST(BundleReader, deviationsInMillimetresAreReadWithAWarning) {
     // so nothing is refused, but a whole run within ±0.1 µm is no real axis.
     QTemporaryDir dir;
     copyBundle(exampleBundlePath(), dir.path());
-    const QString positioning = dir.filePath(QStringLiteral("positioning.csv"));
-    QList<QByteArray> lines = readFile(positioning).split('\n');
-    for (qsizetype i = 1; i < lines.size(); ++i) {
-        const qsizetype comma = lines[i].lastIndexOf(',');
-        if (comma < 0) continue;
-        lines[i] = lines[i].left(comma + 1) +
-                   QByteArray::number(lines[i].mid(comma + 1).toDouble() / 1000, 'g', 12);
-    }
-    writeFile(positioning, lines.join('\n'));
+    rewriteColumn(dir.filePath(QStringLiteral("positioning.csv")), 5,  // deviation_um
+                  [](double um) { return QByteArray::number(um / 1000, 'g', 12); });
     const BundleReadResult result = readBundle(dir.path());
     ASSERT_TRUE(result.ok());
     EXPECT_TRUE(
@@ -89,15 +82,9 @@ TEST(BundleReader, aDriftProbeInMillimetresIsReadWithAWarning) {
     // The spindle run's x probe exported in mm: 1.2 µm written as 0.0012.
     QTemporaryDir dir;
     copyBundle(exampleBundlePath(), dir.path());
-    const QString samples = dir.filePath(QStringLiteral("samples.csv"));
-    QList<QByteArray> lines = readFile(samples).split('\n');
-    for (qsizetype i = 1; i < lines.size(); ++i) {
-        QList<QByteArray> f = lines[i].split(',');
-        if (f.size() > 10 && f[0] == "SP1" && !f[10].isEmpty())  // D_x
-            f[10] = QByteArray::number(f[10].toDouble() / 1000, 'g', 12);
-        lines[i] = f.join(',');
-    }
-    writeFile(samples, lines.join('\n'));
+    rewriteColumn(
+        dir.filePath(QStringLiteral("samples.csv")), 10,  // D_x
+        [](double um) { return QByteArray::number(um / 1000, 'g', 12); }, "SP1");
     const BundleReadResult result = readBundle(dir.path());
     ASSERT_TRUE(result.ok());
     const QString warnings = result.warnings.join(QLatin1Char('\n'));
