@@ -72,7 +72,8 @@ QVariant FindingsModel::headerData(int section, Qt::Orientation orientation, int
     if (role == Qt::ToolTipRole && section == Confidence)
         return tr(
             "The probability that the held-out gain is real and larger than every other "
-            "candidate's of its step");
+            "candidate's of its step; for a cause named, times the share of the positioning "
+            "structure above the noise that the causes explain");
     if (role != Qt::DisplayRole) return {};
     switch (section) {
         case Cause:

@@ -95,10 +95,17 @@ void addDiagnosis(ReportDocument& doc, const DiagnosisSection& s) {
                                  number(f.gain.test_rms_before, 3),
                                  number(f.gain.test_rms_after, 3), number(f.gain.reduction, 3)});
     doc.subheading(QStringLiteral("Findings: step 1, then step 2, each by held-out gain"));
-    doc.paragraph(QStringLiteral(
-        "Confidence: the probability that a candidate's held-out gain is real and larger than "
-        "every other candidate's of its step, from how the gain varies over stretches of the "
-        "held-out runs. A cause is named only when it also explains most of the residual."));
+    doc.paragraph(
+        QStringLiteral(
+            "Confidence: the probability that a candidate's held-out gain is real and larger "
+            "than every other candidate's of its step, from how the gain varies over stretches "
+            "of the held-out runs; for a cause named, times the share of the positioning "
+            "structure above the noise that the causes explain%1: what they leave may be a "
+            "cause outside the library that a named one imitates. A cause is named only when "
+            "it also explains most of the residual.")
+            .arg(r.causes.isEmpty()
+                     ? QString()
+                     : QStringLiteral(" (here %1 %)").arg(100 * r.structure_explained, 0, 'f', 0)));
     doc.table(findings);
     for (std::size_t k = 0; k < r.base_residuals.size(); ++k) {
         const QString run = r.base_residuals[k].run_id;
