@@ -103,6 +103,18 @@ ObjectReader elementReader(const QJsonArray& array, int i, const QString& name,
     return ObjectReader(array[i].toObject(), path, file);
 }
 
+/// What no `part` can be (e.g. "ball screw's"): a value in another unit (m for
+/// mm, g/cm³ for kg/m³, kJ for J), which the models would take at its word.
+void requirePlausible(const ObjectReader& r, const char* key, double value, double low, double high,
+                      const char* unit, const char* part) {
+    if (value < low || value > high)
+        r.fail(QLatin1String(key), QStringLiteral("%1 %2 is no %3 (%4…%5 %2): another unit?")
+                                       .arg(value)
+                                       .arg(QString::fromUtf8(unit), QString::fromUtf8(part))
+                                       .arg(low)
+                                       .arg(high));
+}
+
 Screw readScrew(ObjectReader r) {
     Screw s;
     s.length_mm = r.positive(QStringLiteral("length_mm"));
@@ -128,8 +140,6 @@ Screw readScrew(ObjectReader r) {
     s.specific_heat_J_kgK =
         r.positiveOr(QStringLiteral("specific_heat_J_kgK"), s.specific_heat_J_kgK);
     s.conductivity_W_mK = r.positiveOr(QStringLiteral("conductivity_W_mK"), s.conductivity_W_mK);
-    // What no feed-axis screw can be: a value in another unit (m for mm,
-    // g/cm³ for kg/m³, kJ for J), which the models would take at its word.
     const struct {
         const char* key;
         double value, low, high;
@@ -143,13 +153,7 @@ Screw readScrew(ObjectReader r) {
         {"conductivity_W_mK", s.conductivity_W_mK, 0.1, 1000, "W/(m·K)"},
     };
     for (const auto& l : limits)
-        if (l.value < l.low || l.value > l.high)
-            r.fail(QLatin1String(l.key),
-                   QStringLiteral("%1 %2 is no ball screw's (%3…%4 %2): another unit?")
-                       .arg(l.value)
-                       .arg(QString::fromUtf8(l.unit))
-                       .arg(l.low)
-                       .arg(l.high));
+        requirePlausible(r, l.key, l.value, l.low, l.high, l.unit, "ball screw's");
     s.extra = r.rest();
     return s;
 }
@@ -240,10 +244,9 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName) {
     if (r.has(QStringLiteral("screw"))) c.screw = readScrew(r.object(QStringLiteral("screw")));
     if (r.has(QStringLiteral("nut_length_mm")))
         c.nut_length_mm = r.positive(QStringLiteral("nut_length_mm"));
-    if (c.nut_length_mm && (*c.nut_length_mm < 5 || *c.nut_length_mm > 1000))
-        r.fail(QStringLiteral("nut_length_mm"),
-               QStringLiteral("%1 mm is no ball-screw nut's length (5…1000 mm): another unit?")
-                   .arg(*c.nut_length_mm));
+    if (c.nut_length_mm)
+        requirePlausible(r, "nut_length_mm", *c.nut_length_mm, 5, 1000, "mm",
+                         "ball-screw nut's length");
     c.travel_mm = r.optionalRange(QStringLiteral("travel_mm"));
     if (r.has(QStringLiteral("interferometer"))) {
         ObjectReader i = r.object(QStringLiteral("interferometer"));

@@ -37,9 +37,9 @@ QStringList DisplacementExtents::warnings(const std::vector<Run>& runs) const {
     for (std::size_t r = 0; r < m_extent.size(); ++r)
         for (std::size_t k = 0; k < m_columns.size(); ++k) {
             const auto& [count, largest] = m_extent[r][k];
-            const QString what =
-                QStringLiteral("readings of '%1'").arg(m_columns[k] ? m_columns[k]->id : QString());
-            if (const auto why = tinyMicrometres(count, largest, what))
+            if (count == 0) continue;  // not a drift probe, or not logged in this run
+            if (const auto why = tinyMicrometres(
+                    count, largest, QStringLiteral("readings of '%1'").arg(m_columns[k]->id)))
                 warnings << QStringLiteral("run '%1': %2").arg(runs[r].id, *why);
         }
     return warnings;

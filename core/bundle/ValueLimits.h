@@ -5,10 +5,8 @@
 
 #include <QString>
 #include <optional>
-#include <vector>
 
 #include "core/domain/Channel.h"
-#include "core/domain/Run.h"
 
 namespace driftlab {
 
