@@ -61,7 +61,10 @@ HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
     if (!test)
         for (const QString& id : all)
             if (!r.trainRuns.contains(id)) r.testRuns << id;
-    if (r.trainRuns.isEmpty()) throw CliError(QStringLiteral("no run to fit on"));
+    if (r.trainRuns.isEmpty())
+        throw CliError(QStringLiteral("no run to fit on: ") +
+                       (all.isEmpty() ? models::whyNoModelledRun(campaign, target)
+                                      : QStringLiteral("--test holds out every modelled run")));
 
     const QString label = QStringLiteral("fitting ") + r.model->name();
     if (progress) printProgress(label, 0);

@@ -1,372 +1,260 @@
 #include "core/bundle/BundleReader.h"
 
-#include <QHash>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
 
+#include "core/bundle/BundleParser.h"
 #include "core/bundle/CampaignJson.h"
-#include "core/bundle/CsvTable.h"
 #include "core/bundle/SampleRows.h"
 #include "core/bundle/ValueLimits.h"
 
 namespace driftlab {
-namespace {
 
-const QString kCampaignFile = QStringLiteral("campaign.json");
-const QString kSamplesFile = QStringLiteral("samples.csv");
-const QString kMotionFile = QStringLiteral("motion.csv");
-const QString kPositioningFile = QStringLiteral("positioning.csv");
+using namespace bundle_files;
 
-/// Positions past the travel: an axis overshoots its end targets to reverse
-/// (ISO 230-2 overrun), so they are normal; counted for one warning per file.
-struct Overrun {
-    int count = 0;
-    int firstLine = 0;
-    double furthest_mm = 0;  ///< largest distance outside the travel
-};
+Campaign BundleParser::parse() {
+    QString error;
+    auto json = m_source.open(kCampaign, &error);
+    if (!json)
+        throw BundleException(
+            {kCampaign, 0, 0,
+             QStringLiteral("cannot open: %1 (is this a campaign bundle?)").arg(error)});
+    m_campaign = campaignFromJson(json->readAll(), kCampaign);
+    for (std::size_t i = 0; i < m_campaign.runs.size(); ++i)
+        m_runIndex.insert(m_campaign.runs[i].id, int(i));
+    setPositionLimits();
 
-class BundleParser {
-public:
-    BundleParser(const BundleSource& source, const BundleReadOptions& options)
-        : m_source(source), m_options(options) {}
+    // Motion and positioning first (RunTablesReader.cpp): a run's first sample row then knows
+    // whether every file of the run starts on a logger's clock.
+    if (m_source.contains(kMotion)) readMotion();
+    if (m_source.contains(kPositioning)) readPositioning();
+    readSamples();
+    countCyclesFromZero();
+    if (m_options.progress) m_options.progress(1.0);
+    return std::move(m_campaign);
+}
 
-    Campaign parse() {
-        QString error;
-        auto json = m_source.open(kCampaignFile, &error);
-        if (!json)
+std::unique_ptr<CsvTable> BundleParser::openCsv(const QString& name) {
+    QString error;
+    auto device = m_source.open(name, &error);
+    if (!device) throw BundleException({name, 0, 0, QStringLiteral("cannot open: ") + error});
+    auto csv = std::make_unique<CsvTable>(std::move(device), name);
+    if (const QString note = csv->formatNote(); !note.isEmpty())
+        warnings << name + QStringLiteral(": ") + note;
+    return csv;
+}
+
+std::size_t BundleParser::runOf(const CsvTable& csv, int column) {
+    auto it = m_runIndex.find(csv.text(column));
+    if (it == m_runIndex.end())
+        csv.fail(
+            column,
+            QStringLiteral("unknown run id '%1' (not in campaign.json)").arg(csv.text(column)));
+    return std::size_t(*it);
+}
+
+/// The nut's centre can be anywhere on the screw; further than half a nut
+/// past either end it would be off the screw: a unit mix-up (µm for mm).
+void BundleParser::setPositionLimits() {
+    const auto& c = m_campaign;
+    if (c.screw) {
+        const double margin = c.nut_length_mm.value_or(0.0) / 2;
+        m_positionMin_mm = c.screw->fixed_end_mm - margin;
+        m_positionMax_mm = c.screw->fixed_end_mm + c.screw->length_mm + margin;
+    } else if (c.travel_mm) {
+        const double span = c.travel_mm->to_mm - c.travel_mm->from_mm;
+        m_positionMin_mm = c.travel_mm->from_mm - span;
+        m_positionMax_mm = c.travel_mm->to_mm + span;
+    }
+}
+
+void BundleParser::checkPosition(const CsvTable& csv, int column, double position_mm,
+                                 Overrun& overrun) {
+    if (position_mm < m_positionMin_mm || position_mm > m_positionMax_mm)
+        csv.fail(column, QStringLiteral("%1 = %2 mm lies beyond the screw [%3, %4] mm "
+                                        "(unit mix-up? positions are in mm)")
+                             .arg(csv.header()[std::size_t(column)])
+                             .arg(position_mm)
+                             .arg(m_positionMin_mm)
+                             .arg(m_positionMax_mm));
+    const auto& travel = m_campaign.travel_mm;
+    if (!travel) return;
+    const double outside = std::max(travel->from_mm - position_mm, position_mm - travel->to_mm);
+    if (outside <= 0) return;
+    if (overrun.count++ == 0) overrun.firstLine = csv.line();
+    overrun.furthest_mm = std::max(overrun.furthest_mm, outside);
+}
+
+void BundleParser::warnOverrun(const QString& file, const Overrun& overrun) {
+    if (overrun.count == 0) return;
+    warnings << QStringLiteral(
+                    "%1:%2: %3 position(s) outside the travel [%4, %5] mm, up to "
+                    "%6 mm past it (overrun to reverse; accepted)")
+                    .arg(file)
+                    .arg(overrun.firstLine)
+                    .arg(overrun.count)
+                    .arg(m_campaign.travel_mm->from_mm)
+                    .arg(m_campaign.travel_mm->to_mm)
+                    .arg(overrun.furthest_mm);
+}
+
+/// The declared channel of a samples.csv column, also under a header giving its unit
+/// ("T_nut [°C]", checked); nullptr for an axis column; throws for anything else.
+const Channel* BundleParser::sampleChannel(const CsvTable& csv, int column) const {
+    const QString& header = csv.header()[std::size_t(column)];
+    if (const Channel* channel = m_campaign.findChannel(header)) return channel;
+    if (isAxisColumn(header)) return nullptr;
+    const std::optional<HeaderWithUnit> withUnit = splitHeaderUnit(header);
+    const Channel* channel = withUnit ? m_campaign.findChannel(withUnit->id) : nullptr;
+    if (!channel)
+        throw BundleException(
+            {kSamples, 1, column + 1,
+             QStringLiteral("column '%1' is not a channel declared in %2").arg(header, kCampaign)});
+    if (const auto why = wrongUnit(channel->quantity, withUnit->unit))
+        throw BundleException(
+            {kSamples, 1, column + 1, QStringLiteral("column '%1': %2").arg(header, *why)});
+    return channel;
+}
+
+void BundleParser::check(const CsvTable& csv, int column, const std::optional<QString>& why) {
+    if (why) csv.fail(column, QStringLiteral("column '%1': %2").arg(csv.header()[column], *why));
+}
+
+void BundleParser::reportProgress(const CsvTable& csv, double begin, double span) {
+    if (m_options.progress && !m_options.progress(begin + span * csv.progress()))
+        throw BundleException({csv.fileName(), csv.line(), 0, QStringLiteral("import cancelled")});
+}
+
+void BundleParser::readSamples() {
+    const auto table = openCsv(kSamples);
+    CsvTable& csv = *table;
+    const int runCol = csv.requireColumn(QStringLiteral("run"));
+    const int timeCol = csv.requireColumn(QStringLiteral("time_s"));
+    std::vector<int> dataCols;
+    std::vector<const Channel*> channels;  // nullptr for axis columns
+    for (std::size_t i = 0; i < csv.header().size(); ++i) {
+        if (int(i) == runCol || int(i) == timeCol) continue;
+        const Channel* channel = sampleChannel(csv, int(i));
+        const QString name = channel ? channel->id : csv.header()[i];
+        const auto& columns = m_campaign.sample_columns;
+        if (std::find(columns.begin(), columns.end(), name) != columns.end())
             throw BundleException(
-                {kCampaignFile, 0, 0,
-                 QStringLiteral("cannot open: %1 (is this a campaign bundle?)").arg(error)});
-        m_campaign = campaignFromJson(json->readAll(), kCampaignFile);
-        for (std::size_t i = 0; i < m_campaign.runs.size(); ++i)
-            m_runIndex.insert(m_campaign.runs[i].id, int(i));
-        setPositionLimits();
-
-        // Motion and positioning first: a run's first sample row then knows
-        // whether every file of the run starts on a logger's clock.
-        if (m_source.contains(kMotionFile)) readMotion();
-        if (m_source.contains(kPositioningFile)) readPositioning();
-        readSamples();
-        if (m_options.progress) m_options.progress(1.0);
-        return std::move(m_campaign);
+                {kSamples, 1, int(i) + 1,
+                 QStringLiteral("column '%1' is channel '%2' again").arg(csv.header()[i], name)});
+        dataCols.push_back(int(i));
+        channels.push_back(channel);
+        m_campaign.sample_columns.push_back(name);
     }
-
-    QStringList warnings;
-
-private:
-    std::unique_ptr<CsvTable> openCsv(const QString& name) {
-        QString error;
-        auto device = m_source.open(name, &error);
-        if (!device) throw BundleException({name, 0, 0, QStringLiteral("cannot open: ") + error});
-        auto csv = std::make_unique<CsvTable>(std::move(device), name);
-        if (const QString note = csv->formatNote(); !note.isEmpty())
-            warnings << name + QStringLiteral(": ") + note;
-        return csv;
+    const int positionCol = csv.column(kPositionColumn);
+    for (Run& run : m_campaign.runs) {
+        run.samples.columns = m_campaign.sample_columns;
+        run.samples.values.assign(dataCols.size(), {});
     }
+    SampleRowSink* sink = m_options.sampleSink;
+    if (sink) sink->begin(m_campaign);
 
-    std::size_t runOf(const CsvTable& csv, int column) {
-        auto it = m_runIndex.find(csv.text(column));
-        if (it == m_runIndex.end())
-            csv.fail(
-                column,
-                QStringLiteral("unknown run id '%1' (not in campaign.json)").arg(csv.text(column)));
-        return std::size_t(*it);
-    }
-
-    /// The nut's centre can be anywhere on the screw; further than half a nut
-    /// past either end it would be off the screw: a unit mix-up (µm for mm).
-    void setPositionLimits() {
-        const auto& c = m_campaign;
-        if (c.screw) {
-            const double margin = c.nut_length_mm.value_or(0.0) / 2;
-            m_positionMin_mm = c.screw->fixed_end_mm - margin;
-            m_positionMax_mm = c.screw->fixed_end_mm + c.screw->length_mm + margin;
-        } else if (c.travel_mm) {
-            const double span = c.travel_mm->to_mm - c.travel_mm->from_mm;
-            m_positionMin_mm = c.travel_mm->from_mm - span;
-            m_positionMax_mm = c.travel_mm->to_mm + span;
+    // Each run's latest row waits for a later time: a row at its time (two
+    // devices logged at one instant, or the log written twice) is merged.
+    std::vector<HeldRow> held(m_campaign.runs.size());
+    std::vector<std::optional<double>> offset_s(held.size());  // set by a run's first row
+    DisplacementExtents extents(held.size(), channels);
+    const auto store = [&](std::size_t r) {
+        HeldRow& h = held[r];
+        if (!h.held) return;
+        h.held = false;
+        if (sink) return sink->row(r, h.time_s, h.values.data());
+        SampleSeries& s = m_campaign.runs[r].samples;
+        s.time_s.push_back(h.time_s);
+        for (std::size_t k = 0; k < h.values.size(); ++k) s.values[k].push_back(h.values[k]);
+    };
+    int mergedRows = 0, firstMergedLine = 0;
+    std::vector<double> row(dataCols.size());
+    std::string lastRunId;  // rows come in long stretches of one run: skip the lookup
+    std::size_t runIndex = 0;
+    Overrun overrun;
+    int emptyRows = 0, firstEmptyRowLine = 0;
+    for (std::size_t n = 0; csv.next(); ++n) {
+        const std::string_view id = csv.field(runCol);
+        if (n == 0 || id != lastRunId) {
+            runIndex = runOf(csv, runCol);
+            lastRunId.assign(id);
         }
-    }
-
-    void checkPosition(const CsvTable& csv, int column, double position_mm, Overrun& overrun) {
-        if (position_mm < m_positionMin_mm || position_mm > m_positionMax_mm)
-            csv.fail(column, QStringLiteral("%1 = %2 mm lies beyond the screw [%3, %4] mm "
-                                            "(unit mix-up? positions are in mm)")
-                                 .arg(csv.header()[std::size_t(column)])
-                                 .arg(position_mm)
-                                 .arg(m_positionMin_mm)
-                                 .arg(m_positionMax_mm));
-        const auto& travel = m_campaign.travel_mm;
-        if (!travel) return;
-        const double outside = std::max(travel->from_mm - position_mm, position_mm - travel->to_mm);
-        if (outside <= 0) return;
-        if (overrun.count++ == 0) overrun.firstLine = csv.line();
-        overrun.furthest_mm = std::max(overrun.furthest_mm, outside);
-    }
-
-    void warnOverrun(const QString& file, const Overrun& overrun) {
-        if (overrun.count == 0) return;
-        warnings << QStringLiteral(
-                        "%1:%2: %3 position(s) outside the travel [%4, %5] mm, up to "
-                        "%6 mm past it (overrun to reverse; accepted)")
-                        .arg(file)
-                        .arg(overrun.firstLine)
-                        .arg(overrun.count)
-                        .arg(m_campaign.travel_mm->from_mm)
-                        .arg(m_campaign.travel_mm->to_mm)
-                        .arg(overrun.furthest_mm);
-    }
-
-    /// The declared channel of a samples.csv column, also under a header giving its unit
-    /// ("T_nut [°C]", checked); nullptr for an axis column; throws for anything else.
-    const Channel* sampleChannel(const CsvTable& csv, int column) const {
-        const QString& header = csv.header()[std::size_t(column)];
-        if (const Channel* channel = m_campaign.findChannel(header)) return channel;
-        if (isAxisColumn(header)) return nullptr;
-        const std::optional<HeaderWithUnit> withUnit = splitHeaderUnit(header);
-        const Channel* channel = withUnit ? m_campaign.findChannel(withUnit->id) : nullptr;
-        if (!channel)
-            throw BundleException({kSamplesFile, 1, column + 1,
-                                   QStringLiteral("column '%1' is not a channel declared in %2")
-                                       .arg(header, kCampaignFile)});
-        if (const auto why = wrongUnit(channel->quantity, withUnit->unit))
-            throw BundleException(
-                {kSamplesFile, 1, column + 1, QStringLiteral("column '%1': %2").arg(header, *why)});
-        return channel;
-    }
-
-    void check(const CsvTable& csv, int column, const std::optional<QString>& why) {
-        if (why)
-            csv.fail(column, QStringLiteral("column '%1': %2").arg(csv.header()[column], *why));
-    }
-
-    void reportProgress(const CsvTable& csv, double begin, double span) {
-        if (m_options.progress && !m_options.progress(begin + span * csv.progress()))
-            throw BundleException(
-                {csv.fileName(), csv.line(), 0, QStringLiteral("import cancelled")});
-    }
-
-    void readSamples() {
-        const auto table = openCsv(kSamplesFile);
-        CsvTable& csv = *table;
-        const int runCol = csv.requireColumn(QStringLiteral("run"));
-        const int timeCol = csv.requireColumn(QStringLiteral("time_s"));
-        std::vector<int> dataCols;
-        std::vector<const Channel*> channels;  // nullptr for axis columns
-        for (std::size_t i = 0; i < csv.header().size(); ++i) {
-            if (int(i) == runCol || int(i) == timeCol) continue;
-            const Channel* channel = sampleChannel(csv, int(i));
-            const QString name = channel ? channel->id : csv.header()[i];
-            const auto& columns = m_campaign.sample_columns;
-            if (std::find(columns.begin(), columns.end(), name) != columns.end())
-                throw BundleException({kSamplesFile, 1, int(i) + 1,
-                                       QStringLiteral("column '%1' is channel '%2' again")
-                                           .arg(csv.header()[i], name)});
-            dataCols.push_back(int(i));
-            channels.push_back(channel);
-            m_campaign.sample_columns.push_back(name);
-        }
-        const int positionCol = csv.column(kPositionColumn);
-        for (Run& run : m_campaign.runs) {
-            run.samples.columns = m_campaign.sample_columns;
-            run.samples.values.assign(dataCols.size(), {});
-        }
-        SampleRowSink* sink = m_options.sampleSink;
-        if (sink) sink->begin(m_campaign);
-
-        // Each run's latest row waits for a later time: a row at its time (two
-        // devices logged at one instant, or the log written twice) is merged.
-        std::vector<HeldRow> held(m_campaign.runs.size());
-        std::vector<std::optional<double>> offset_s(held.size());  // set by a run's first row
-        DisplacementExtents extents(held.size(), channels);
-        const auto store = [&](std::size_t r) {
-            HeldRow& h = held[r];
-            if (!h.held) return;
-            h.held = false;
-            if (sink) return sink->row(r, h.time_s, h.values.data());
-            SampleSeries& s = m_campaign.runs[r].samples;
-            s.time_s.push_back(h.time_s);
-            for (std::size_t k = 0; k < h.values.size(); ++k) s.values[k].push_back(h.values[k]);
-        };
-        int mergedRows = 0, firstMergedLine = 0;
-        std::vector<double> row(dataCols.size());
-        std::string lastRunId;  // rows come in long stretches of one run: skip the lookup
-        std::size_t runIndex = 0;
-        Overrun overrun;
-        int emptyRows = 0, firstEmptyRowLine = 0;
-        for (std::size_t n = 0; csv.next(); ++n) {
-            const std::string_view id = csv.field(runCol);
-            if (n == 0 || id != lastRunId) {
-                runIndex = runOf(csv, runCol);
-                lastRunId.assign(id);
-            }
-            check(csv, timeCol, impossibleTime(csv.number(timeCol)));
-            HeldRow& last = held[runIndex];
-            if (!offset_s[runIndex])
-                offset_s[runIndex] =
-                    loggerClockOffset_s(m_campaign.runs[runIndex], csv.number(timeCol));
-            const double t = onRunClock(csv.number(timeCol), *offset_s[runIndex]);
-            if (t < last.time_s)
-                csv.fail(timeCol,
-                         QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
-                             .arg(m_campaign.runs[runIndex].id)
-                             .arg(t)
-                             .arg(last.time_s));
-            bool anyValue = false;
-            for (std::size_t k = 0; k < dataCols.size(); ++k) {
-                const int column = dataCols[k];
-                const double v = row[k] = csv.numberOrMissing(column);
-                if (std::isnan(v)) continue;
-                anyValue = true;
-                if (const Channel* channel = channels[k]) {
-                    check(csv, column, impossibleValue(channel->quantity, v, channel->role));
-                    extents.add(runIndex, k, v);
-                } else if (column == positionCol)
-                    checkPosition(csv, column, v, overrun);
-                else
-                    check(csv, column, impossibleAxisValue(csv.header()[column], v));
-            }
-            // A row without any value carries nothing to store; say so instead of keeping it.
-            if (!anyValue) {
-                if (++emptyRows == 1) firstEmptyRowLine = csv.line();
-                continue;
-            }
-            if (last.held && t == last.time_s) {
-                mergeInto(last, row, csv, dataCols, m_campaign.runs[runIndex].id);
-                if (++mergedRows == 1) firstMergedLine = csv.line();
-                continue;
-            }
-            store(runIndex);
-            last = {t, csv.line(), row, true};
-            if ((n & 0xFFFF) == 0) reportProgress(csv, 0.2, 0.8);
-        }
-        for (std::size_t r = 0; r < held.size(); ++r) store(r);
-        moveOntoRunClocks(offset_s);
-        if (mergedRows > 0)
-            warnings << QStringLiteral(
-                            "%1:%2: %3 row(s) repeat the time of their run's row before "
-                            "and were merged into it (one instant, logged twice)")
-                            .arg(kSamplesFile)
-                            .arg(firstMergedLine)
-                            .arg(mergedRows);
-        if (emptyRows > 0)
-            warnings << QStringLiteral("%1:%2: %3 row(s) without any value were skipped")
-                            .arg(kSamplesFile)
-                            .arg(firstEmptyRowLine)
-                            .arg(emptyRows);
-        warnOverrun(kSamplesFile, overrun);
-        for (const QString& w : extents.warnings(m_campaign.runs))
-            warnings << kSamplesFile + QStringLiteral(": ") + w;
-    }
-
-    /// Runs logged on a logger's clock are counted from their first record,
-    /// with one warning naming them.
-    void moveOntoRunClocks(const std::vector<std::optional<double>>& offset_s) {
-        QStringList moved;
-        for (std::size_t r = 0; r < offset_s.size(); ++r) {
-            if (!offset_s[r].value_or(0.0)) continue;
-            moveOntoRunClock(m_campaign.runs[r], *offset_s[r]);
-            moved << QStringLiteral("'%1' at %2 s").arg(m_campaign.runs[r].id).arg(*offset_s[r]);
-        }
-        if (!moved.isEmpty())
-            warnings << QStringLiteral(
-                            "run(s) starting late in every file, as on a logger's clock: %1; "
-                            "counted from their first record (time_s counts from a run's start)")
-                            .arg(moved.join(QStringLiteral(", ")));
-    }
-
-    void readMotion() {
-        const auto table = openCsv(kMotionFile);
-        CsvTable& csv = *table;
-        const QStringList expected{QStringLiteral("run"),   QStringLiteral("start_s"),
-                                   QStringLiteral("end_s"), QStringLiteral("from_mm"),
-                                   QStringLiteral("to_mm"), QStringLiteral("feed_mm_min")};
-        const std::vector<int> c = csv.requireExactly(expected);
-        Overrun overrun;
-        while (csv.next()) {
-            Run& run = m_campaign.runs[runOf(csv, c[0])];
-            MotionSegment m{csv.number(c[1]), csv.number(c[2]), csv.number(c[3]), csv.number(c[4]),
-                            csv.number(c[5])};
-            check(csv, c[1], impossibleTime(m.start_s));
-            check(csv, c[2], impossibleTime(m.end_s));
-            check(csv, c[5], impossibleAxisValue(kFeedColumn, m.feed_mm_min));
-            if (m.end_s < m.start_s)
-                csv.fail(c[2], QStringLiteral("segment ends (%1 s) before it starts (%2 s)")
-                                   .arg(m.end_s)
-                                   .arg(m.start_s));
-            if (!run.motion.empty() && m.start_s < run.motion.back().end_s)
-                csv.fail(c[1],
-                         QStringLiteral("time goes backwards in run '%1': segment starts at %2 s, "
-                                        "before the previous one ends (%3 s)")
-                             .arg(run.id)
-                             .arg(m.start_s)
-                             .arg(run.motion.back().end_s));
-            checkPosition(csv, c[3], m.from_mm, overrun);
-            checkPosition(csv, c[4], m.to_mm, overrun);
-            run.motion.push_back(m);
-        }
-        warnOverrun(kMotionFile, overrun);
-        reportProgress(csv, 0.0, 0.1);
-    }
-
-    void readPositioning() {
-        const auto table = openCsv(kPositioningFile);
-        CsvTable& csv = *table;
-        const QStringList expected{QStringLiteral("run"),       QStringLiteral("time_s"),
-                                   QStringLiteral("cycle"),     QStringLiteral("target_mm"),
-                                   QStringLiteral("direction"), QStringLiteral("deviation_um")};
-        const std::vector<int> c = csv.requireExactly(expected);
-        Overrun overrun;
-        while (csv.next()) {
-            Run& run = m_campaign.runs[runOf(csv, c[0])];
-            PositioningMeasurement p;
-            p.time_s = csv.number(c[1]);
-            check(csv, c[1], impossibleTime(p.time_s));
-            if (!run.positioning.empty() && p.time_s < run.positioning.back().time_s)
-                csv.fail(c[1], QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
-                                   .arg(run.id)
-                                   .arg(p.time_s)
-                                   .arg(run.positioning.back().time_s));
-            p.cycle = csv.integer(c[2]);
-            if (p.cycle < 0) csv.fail(c[2], QStringLiteral("cycle must not be negative"));
-            p.target_mm = csv.number(c[3]);
-            checkPosition(csv, c[3], p.target_mm, overrun);
-            QString direction = csv.text(c[4]);
-            if (direction == QLatin1String("+"))
-                p.direction = Direction::Positive;
-            else if (direction == QLatin1String("-"))
-                p.direction = Direction::Negative;
+        check(csv, timeCol, impossibleTime(csv.number(timeCol)));
+        HeldRow& last = held[runIndex];
+        if (!offset_s[runIndex])
+            offset_s[runIndex] =
+                loggerClockOffset_s(m_campaign.runs[runIndex], csv.number(timeCol));
+        const double t = onRunClock(csv.number(timeCol), *offset_s[runIndex]);
+        if (t < last.time_s)
+            csv.fail(timeCol, QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
+                                  .arg(m_campaign.runs[runIndex].id)
+                                  .arg(t)
+                                  .arg(last.time_s));
+        bool anyValue = false;
+        for (std::size_t k = 0; k < dataCols.size(); ++k) {
+            const int column = dataCols[k];
+            const double v = row[k] = csv.numberOrMissing(column);
+            if (std::isnan(v)) continue;
+            anyValue = true;
+            if (const Channel* channel = channels[k]) {
+                check(csv, column, impossibleValue(channel->quantity, v, channel->role));
+                extents.add(runIndex, k, v);
+            } else if (column == positionCol)
+                checkPosition(csv, column, v, overrun);
             else
-                csv.fail(c[4],
-                         QStringLiteral("direction must be + or -, found '%1'").arg(direction));
-            p.deviation_um = csv.number(c[5]);
-            check(csv, c[5], impossibleDeviation(p.deviation_um));
-            run.positioning.push_back(p);
+                check(csv, column, impossibleAxisValue(csv.header()[column], v));
         }
-        warnOverrun(kPositioningFile, overrun);
-        for (const Run& run : m_campaign.runs) {
-            double largest_um = 0;
-            for (const PositioningMeasurement& p : run.positioning)
-                largest_um = std::max(largest_um, std::abs(p.deviation_um));
-            if (const auto why = tinyMicrometres(run.positioning.size(), largest_um,
-                                                 QStringLiteral("deviations")))
-                warnings << QStringLiteral("%1: run '%2': %3").arg(kPositioningFile, run.id, *why);
+        // A row without any value carries nothing to store; say so instead of keeping it.
+        if (!anyValue) {
+            if (++emptyRows == 1) firstEmptyRowLine = csv.line();
+            continue;
         }
-        reportProgress(csv, 0.1, 0.1);
+        if (last.held && t == last.time_s) {
+            mergeInto(last, row, csv, dataCols, m_campaign.runs[runIndex].id);
+            if (++mergedRows == 1) firstMergedLine = csv.line();
+            continue;
+        }
+        store(runIndex);
+        last = {t, csv.line(), row, true};
+        if ((n & 0xFFFF) == 0) reportProgress(csv, 0.2, 0.8);
     }
+    for (std::size_t r = 0; r < held.size(); ++r) store(r);
+    moveOntoRunClocks(offset_s);
+    if (mergedRows > 0)
+        warnings << QStringLiteral(
+                        "%1:%2: %3 row(s) repeat the time of their run's row before "
+                        "and were merged into it (one instant, logged twice)")
+                        .arg(kSamples)
+                        .arg(firstMergedLine)
+                        .arg(mergedRows);
+    if (emptyRows > 0)
+        warnings << QStringLiteral("%1:%2: %3 row(s) without any value were skipped")
+                        .arg(kSamples)
+                        .arg(firstEmptyRowLine)
+                        .arg(emptyRows);
+    warnOverrun(kSamples, overrun);
+    for (const QString& w : extents.warnings(m_campaign.runs))
+        warnings << kSamples + QStringLiteral(": ") + w;
+}
 
-    const BundleSource& m_source;
-    const BundleReadOptions& m_options;
-    Campaign m_campaign;
-    QHash<QString, int> m_runIndex;
-    double m_positionMin_mm = -std::numeric_limits<double>::infinity();
-    double m_positionMax_mm = std::numeric_limits<double>::infinity();
-};
-
-}  // namespace
+/// Runs logged on a logger's clock are counted from their first record,
+/// with one warning naming them.
+void BundleParser::moveOntoRunClocks(const std::vector<std::optional<double>>& offset_s) {
+    QStringList moved;
+    for (std::size_t r = 0; r < offset_s.size(); ++r) {
+        if (!offset_s[r].value_or(0.0)) continue;
+        moveOntoRunClock(m_campaign.runs[r], *offset_s[r]);
+        moved << QStringLiteral("'%1' at %2 s").arg(m_campaign.runs[r].id).arg(*offset_s[r]);
+    }
+    if (!moved.isEmpty())
+        warnings << QStringLiteral(
+                        "run(s) starting late in every file, as on a logger's clock: %1; "
+                        "counted from their first record (time_s counts from a run's start)")
+                        .arg(moved.join(QStringLiteral(", ")));
+}
 
 BundleReadResult readBundle(const BundleSource& source, const BundleReadOptions& options) {
     BundleReadResult result;

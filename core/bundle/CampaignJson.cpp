@@ -123,6 +123,7 @@ Screw readScrew(ObjectReader r) {
     s.fixed_end_mm = r.number(QStringLiteral("fixed_end_mm"));
     s.mounting = r.string(QStringLiteral("mounting"), false);
     if (s.mounting.isEmpty()) s.mounting = QStringLiteral("fixed-free");
+    s.mounting = s.mounting.trimmed().toLower();  // "Fixed-Free" as hand-written
     static const QStringList mountings{QStringLiteral("fixed-free"),
                                        QStringLiteral("fixed-supported"),
                                        QStringLiteral("fixed-fixed")};
@@ -178,7 +179,8 @@ Channel readChannel(ObjectReader r) {
     auto ro = roleFromString(role);
     if (!ro || !roleAllowedFor(c.quantity, *ro))
         r.fail(QStringLiteral("role"),
-               QStringLiteral("unknown role '%1' for a %2 channel").arg(role, quantity));
+               QStringLiteral("unknown role '%1' for a %2 channel (expected %3)")
+                   .arg(role, toString(*q), roleNamesFor(*q).join(QStringLiteral(", "))));
     c.role = *ro;
     c.location = r.string(QStringLiteral("location"), false);
     c.position_mm = r.optionalNumber(QStringLiteral("position_mm"));
@@ -228,11 +230,17 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName) {
 
     ObjectReader r(doc.object(), QString(), fileName);
     Campaign c;
-    QString format = r.string(QStringLiteral("format"), true);
+    // The format key tells a bundle from any other JSON file; a hand-written
+    // file may lack it, so the error gives the line to add.
+    QString format = r.string(QStringLiteral("format"), false);
     if (format != kCampaignFormat)
-        r.fail(
-            QStringLiteral("format"),
-            QStringLiteral("unsupported format '%1' (expected %2)").arg(format, kCampaignFormat));
+        r.fail(QStringLiteral("format"),
+               format.isEmpty()
+                   ? QStringLiteral("missing (a campaign.json names its format: \"format\": "
+                                    "\"%1\")")
+                         .arg(kCampaignFormat)
+                   : QStringLiteral("unsupported format '%1' (expected %2)")
+                         .arg(format, kCampaignFormat));
     c.name = r.string(QStringLiteral("name"), true);
 
     ObjectReader machine = r.object(QStringLiteral("machine"));

@@ -87,9 +87,33 @@ int CsvTable::column(const QString& name) const {
 int CsvTable::requireColumn(const QString& name) const {
     int c = column(name);
     if (c < 0)
-        throw BundleException(
-            {m_fileName, 1, 0, QStringLiteral("missing column '%1' in header").arg(name)});
+        throw BundleException({m_fileName, 1, 0,
+                               QStringLiteral("missing column '%1' in header%2")
+                                   .arg(name, sameQuantityInAnotherUnit(name))});
     return c;
+}
+
+QString CsvTable::sameQuantityInAnotherUnit(const QString& name) const {
+    // "deviation_um" is the quantity "deviation" in um: a header naming
+    // "deviation_mm" or a bare "deviation" is the column in another unit, or
+    // with none.
+    const qsizetype cut = name.lastIndexOf(QLatin1Char('_'));
+    if (cut <= 0) return {};
+    const QString stem = name.left(cut), unit = name.mid(cut + 1);
+    for (const QString& h : m_header) {
+        if (h.compare(stem, Qt::CaseInsensitive) == 0)
+            return QStringLiteral(
+                       ": it has '%1', without its unit (DriftLab reads %2 in %3: "
+                       "name it '%4' if it is in %3)")
+                .arg(h, stem, unit, name);
+        if (h.startsWith(stem + QLatin1Char('_'), Qt::CaseInsensitive) &&
+            !h.mid(cut + 1).contains(QLatin1Char('_')))
+            return QStringLiteral(
+                       ": it has '%1', in %2 (DriftLab reads %3 in %4: convert the "
+                       "column and name it '%5')")
+                .arg(h, h.mid(cut + 1), stem, unit, name);
+    }
+    return {};
 }
 
 std::vector<int> CsvTable::requireExactly(const QStringList& expected) const {

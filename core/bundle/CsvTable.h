@@ -68,6 +68,9 @@ public:
     void endRecord();
 
 private:
+    /// For a missing column NAME_UNIT: a hint naming a header column of the
+    /// same quantity in another unit or with none; empty if there is none.
+    QString sameQuantityInAnotherUnit(const QString& name) const;
     /// Feeds the parser until a record is complete; false at the end of the file.
     bool readRecord();
     bool feedLine();

@@ -37,11 +37,15 @@ QString nameOf(const std::array<std::pair<Enum, const char*>, N>& table, Enum va
     return {};
 }
 
+/// Hand-written campaign files spell a name "Drift_X", "drift-x" or "drift x":
+/// the same name, read in any case with '-' or a space for '_'.
 template <typename Enum, std::size_t N>
 std::optional<Enum> valueOf(const std::array<std::pair<Enum, const char*>, N>& table,
                             const QString& text) {
+    QString spelled = text.trimmed().toLower();
+    spelled.replace(QLatin1Char('-'), QLatin1Char('_')).replace(QLatin1Char(' '), QLatin1Char('_'));
     for (const auto& [e, name] : table)
-        if (text == QLatin1String(name)) return e;
+        if (spelled == QLatin1String(name)) return e;
     return std::nullopt;
 }
 
@@ -82,6 +86,13 @@ bool roleAllowedFor(Quantity quantity, ChannelRole role) {
             return role == ChannelRole::Spindle;
     }
     return false;
+}
+
+QStringList roleNamesFor(Quantity quantity) {
+    QStringList names;
+    for (const auto& [role, name] : kRoles)
+        if (roleAllowedFor(quantity, role)) names << QString::fromLatin1(name);
+    return names;
 }
 
 bool isValidIdentifier(const QString& id) {

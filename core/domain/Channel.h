@@ -4,6 +4,7 @@
 
 #include <QJsonObject>
 #include <QString>
+#include <QStringList>
 #include <optional>
 #include <vector>
 
@@ -38,6 +39,8 @@ std::optional<ChannelRole> roleFromString(const QString& text);
 QString unitOf(Quantity quantity);
 /// Whether a role makes sense for a quantity (e.g. `nut` is a temperature role).
 bool roleAllowedFor(Quantity quantity, ChannelRole role);
+/// The names of the roles a quantity allows ("nut", "bearing", …), in declaration order.
+QStringList roleNamesFor(Quantity quantity);
 /// Channel and run ids: [A-Za-z0-9_]+ so they can be CSV headers and file names.
 bool isValidIdentifier(const QString& id);
 

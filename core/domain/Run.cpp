@@ -21,7 +21,8 @@ QString toString(RunKind kind) {
 
 std::optional<RunKind> runKindFromString(const QString& text) {
     for (RunKind kind : {RunKind::Moving, RunKind::Spindle, RunKind::Etve, RunKind::Positioning})
-        if (toString(kind) == text) return kind;
+        if (toString(kind).compare(text.trimmed(), Qt::CaseInsensitive) == 0)
+            return kind;  // "ETVE"
     return std::nullopt;
 }
 

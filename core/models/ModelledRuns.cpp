@@ -25,6 +25,21 @@ QStringList modelledRuns(const Campaign& campaign, const QString& targetChannel)
     return ids;
 }
 
+QString whyNoModelledRun(const Campaign& campaign, const QString& targetChannel) {
+    if (!targetChannel.isEmpty())
+        return QStringLiteral("no spindle or ETVE run logs the drift channel '%1'")
+            .arg(targetChannel);
+    QStringList warm;
+    for (const Run& run : campaign.runs)
+        if (isFeedAxisRun(run.kind) && !run.positioning.empty() && !hasColdReference(run))
+            warm << QLatin1Char('\'') + run.id + QLatin1Char('\'');
+    if (warm.isEmpty()) return QStringLiteral("no feed-axis run has positioning readings to model");
+    return QStringLiteral(
+               "run(s) %1 have positioning readings but no cycle 0 (the cold "
+               "reference): a thermal error is the drift from it")
+        .arg(warm.join(QStringLiteral(", ")));
+}
+
 QStringList driftTargets(const Campaign& campaign) {
     QStringList targets;
     for (const Channel& channel : campaign.channels) {

@@ -14,6 +14,10 @@ namespace driftlab::models {
 /// spindle/ETVE runs that log the drift channel `targetChannel`. In campaign order.
 QStringList modelledRuns(const Campaign& campaign, const QString& targetChannel = {});
 
+/// Why no run is modelled, for an error that names what is missing: feed-axis
+/// runs measured without a cold reference, or no run logging the target.
+QString whyNoModelledRun(const Campaign& campaign, const QString& targetChannel = {});
+
 /// The displacement channels that some spindle/ETVE run logs: the drift
 /// targets a model can take (`--target`). In declaration order.
 QStringList driftTargets(const Campaign& campaign);

@@ -1,7 +1,8 @@
 // Bundles as other software writes them (issue 9): Python's csv module with
 // every cell quoted, CRLF and a byte-order mark; a European spreadsheet export;
 // a tab-separated one with units in the header; two loggers merged row by row;
-// a run on a logger's clock; Info-ZIP archives; an axis that overruns its
+// a run on a logger's clock; an interferometer's cycles counted from 1 with
+// arrows for directions; Info-ZIP archives; an axis that overruns its
 // travel to reverse. Each must import through the real driftlab-cli and give
 // the same campaign as the plain example; export never mixes two campaigns in
 // one folder.
@@ -198,6 +199,57 @@ csv.writer(open(path, 'w', newline='')).writerows(rows)
                                   QStringLiteral("--model"), QStringLiteral("heat-transfer")});
     EXPECT_NE(fit.exitCode, 0);
     EXPECT_TRUE(fit.err.contains("no sample between 0 s and 900 s")) << fit.err.constData();
+}
+
+TEST(RealWorldBundle, cyclesCountedFromOneWithArrowsForDirectionsImportAsThePlainBundle) {
+    // An interferometer package's export: measurement cycles counted from 1,
+    // directions as ISO 230-2's arrows. Before, the models refused it ("run
+    // 'S1' has no cycle 0") and the reader refused the arrows.
+    QTemporaryDir dir;
+    const QString bundle = dir.filePath(QStringLiteral("cycles"));
+    copyBundle(exampleBundlePath(), bundle);
+    const char* script = R"(
+import csv, sys
+path = sys.argv[1] + '/positioning.csv'
+rows = list(csv.reader(open(path, newline='', encoding='utf-8')))
+for row in rows[1:]:
+    row[2] = str(int(row[2]) + 1)
+    row[4] = {'+': '\u2191', '-': '\u2193'}[row[4]]
+csv.writer(open(path, 'w', newline='', encoding='utf-8')).writerows(rows)
+)";
+    expectRewrittenImportsAsThePlainBundle(
+        bundle, script,
+        "warning: positioning.csv: the cycles of run(s) 'S1' are counted from 1, with no cycle 0: "
+        "their first pass, cycle 1, is read as the cold reference (cycle 0)");
+    const BundleReadResult read = readBundle(bundle);
+    ASSERT_TRUE(read.ok());
+    EXPECT_TRUE(read.warnings.contains(QStringLiteral(
+        "positioning.csv:2: direction written as '↑', '↓': read as + (positive, ↑) and - "
+        "(negative, ↓)")))
+        << qPrintable(read.warnings.join(QLatin1Char('\n')));
+
+    // A run that lost its cold pass also starts with cycle 1, but warm, at
+    // 550 s: it is not renumbered, and the models say what is missing.
+    const QString lost = dir.filePath(QStringLiteral("lost"));
+    copyBundle(exampleBundlePath(), lost);
+    const char* dropColdPass = R"(
+import csv, sys
+path = sys.argv[1] + '/positioning.csv'
+rows = list(csv.reader(open(path, newline='')))
+csv.writer(open(path, 'w', newline='')).writerows(rows[:1] + [r for r in rows[1:] if r[2] != '0'])
+)";
+    runTool(QStringLiteral("python3"),
+            {QStringLiteral("-c"), QString::fromUtf8(dropColdPass), lost});
+    const BundleReadResult warm = readBundle(lost);
+    ASSERT_TRUE(warm.ok());
+    EXPECT_EQ(warm.campaign->findRun(QStringLiteral("S1"))->positioning.front().cycle, 1);
+    const CliResult fit =
+        runCli({QStringLiteral("fit"), lost, QStringLiteral("--model"), QStringLiteral("mlr")});
+    EXPECT_NE(fit.exitCode, 0);
+    EXPECT_TRUE(
+        fit.err.contains("no run to fit on: run(s) 'S1' have positioning readings but no "
+                         "cycle 0 (the cold reference)"))
+        << fit.err.constData();
 }
 
 TEST(RealWorldBundle, zipArchivesImportFromTheRootOrFromOneFolder) {

@@ -247,9 +247,28 @@ const std::vector<BadBundleCase>& badBundleCases() {
              writeFile(file(d, "samples.csv"), csv.left(csv.size() - 40));
          },
          "samples.csv:543:", "(truncated line?)"},
+        {"deviation_in_mm_by_its_header",
+         [=](const QString& d) {
+             replaceInFile(file(d, "positioning.csv"), "deviation_um", "deviation_mm");
+         },
+         "positioning.csv:1",
+         "missing column 'deviation_um' in header: it has 'deviation_mm', in mm (DriftLab reads "
+         "deviation in um: convert the column and name it 'deviation_um')"},
+        {"time_without_its_unit",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "run,time_s,", "run,time,");
+         },
+         "samples.csv:1", "missing column 'time_s' in header: it has 'time', without its unit"},
+        {"no_format_key",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"format\": \"driftlab.campaign/1\",", "");
+         },
+         "campaign.json", "format: missing (a campaign.json names its format: \"format\": "},
         {"bad_direction",
-         [=](const QString& d) { replaceInFile(file(d, "positioning.csv"), ",70,+,", ",70,up,"); },
-         "positioning.csv:3:5", "direction must be + or -, found 'up'"},
+         [=](const QString& d) {
+             replaceInFile(file(d, "positioning.csv"), ",70,+,", ",70,both,");
+         },
+         "positioning.csv:3:5", "direction must be + or -, found 'both'"},
         {"kelvin_temperatures",
          [=](const QString& d) {
              rewriteColumn(file(d, "samples.csv"), 2,

@@ -94,3 +94,30 @@ TEST(BundleReader, aDriftProbeInMillimetresIsReadWithAWarning) {
         << qPrintable(warnings);
     EXPECT_FALSE(warnings.contains(QStringLiteral("'D_y'"))) << qPrintable(warnings);
 }
+
+TEST(BundleReader, namesSpelledByHandAreTheNamesTheyMean) {
+    // A hand-written campaign.json: "ETVE" as the acronym is written, a role
+    // capitalised or with '-' or a space for '_', a mounting in title case.
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    const QString json = dir.filePath(QStringLiteral("campaign.json"));
+    replaceInFile(json, "\"kind\": \"moving\"", "\"kind\": \"Moving\"");
+    replaceInFile(json, "\"kind\": \"spindle\"", "\"kind\": \"SPINDLE\"");
+    replaceInFile(json, "\"role\": \"nut\"", "\"role\": \"Nut\"");
+    replaceInFile(json, "\"role\": \"drift_x\"", "\"role\": \"Drift-X\"");
+    replaceInFile(json, "\"role\": \"tilt_a\"", "\"role\": \"tilt a\"");
+    replaceInFile(json, "\"quantity\": \"displacement\"", "\"quantity\": \"Displacement\"");
+    replaceInFile(json, "\"mounting\": \"fixed-free\"", "\"mounting\": \"Fixed-Free\"");
+    const BundleReadResult result = readBundle(dir.path());
+    ASSERT_TRUE(result.ok()) << qPrintable(result.error->toString());
+    EXPECT_EQ(*result.campaign, exampleCampaign());
+
+    // A name that is none of them lists what is.
+    replaceInFile(json, "\"role\": \"Nut\"", "\"role\": \"nut flank\"");
+    const BundleReadResult wrong = readBundle(dir.path());
+    ASSERT_TRUE(wrong.error);
+    EXPECT_TRUE(wrong.error->toString().endsWith(QStringLiteral(
+        "unknown role 'nut flank' for a temperature channel (expected nut, bearing, ambient, "
+        "air, structure, motor, spindle, other)")))
+        << qPrintable(wrong.error->toString());
+}

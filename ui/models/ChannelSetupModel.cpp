@@ -32,13 +32,6 @@ QString article(Quantity quantity) {
 
 }  // namespace
 
-QStringList roleNamesFor(Quantity quantity) {
-    QStringList names;
-    for (int r = int(ChannelRole::Nut); r <= int(ChannelRole::Drift); ++r)
-        if (roleAllowedFor(quantity, ChannelRole(r))) names << toString(ChannelRole(r));
-    return names;
-}
-
 ChannelSetupModel::ChannelSetupModel(QObject* parent) : QAbstractTableModel(parent) {}
 
 void ChannelSetupModel::setChannels(const std::vector<Channel>& channels) {

@@ -63,7 +63,4 @@ private:
     std::optional<devices::ChannelRegisterMap> m_deviceMap;
 };
 
-/// The roles that fit a quantity, as their names ("nut", "bearing", …).
-QStringList roleNamesFor(Quantity quantity);
-
 }  // namespace driftlab::ui

@@ -1,0 +1,163 @@
+// motion.csv and positioning.csv: the motion programme actually run and the
+// interferometer's readings (DESIGN.md section 2), read before samples.csv.
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/bundle/BundleParser.h"
+#include "core/bundle/SampleRows.h"
+#include "core/bundle/ValueLimits.h"
+
+namespace driftlab {
+namespace {
+
+/// A direction of approach as DriftLab writes it (+, -) or as other software
+/// does: ISO 230-2's arrows, words, a sign with a one, a typographic minus.
+std::optional<Direction> directionFromText(const QString& text) {
+    static const QStringList positive{QStringLiteral("+"),   QStringLiteral("+1"),
+                                      QStringLiteral("↑"),   QStringLiteral("up"),
+                                      QStringLiteral("pos"), QStringLiteral("positive")};
+    static const QStringList negative{QStringLiteral("-"),       QStringLiteral("-1"),
+                                      QStringLiteral("−"),       QStringLiteral("↓"),
+                                      QStringLiteral("down"),    QStringLiteral("neg"),
+                                      QStringLiteral("negative")};
+    const QString t = text.toLower();
+    if (positive.contains(t)) return Direction::Positive;
+    if (negative.contains(t)) return Direction::Negative;
+    return std::nullopt;
+}
+
+/// Whether a moving run's readings, on the run's clock, have no cycle 0 and
+/// begin with a whole pass of cycle 1 at its start, where DESIGN.md §2 puts
+/// cycle 0. A run that lost its cold pass starts with cycle 1 later, warm.
+bool firstPassIsCycleOneAtTheStart(const Run& run) {
+    const auto& readings = run.positioning;
+    const auto firstOther =
+        std::find_if(readings.begin(), readings.end(), [](const auto& m) { return m.cycle != 1; });
+    return !readings.empty() && readings.front().cycle == 1 &&
+           readings.front().time_s <= kLoggerClockStart_s &&
+           std::none_of(firstOther, readings.end(), [](const auto& m) { return m.cycle <= 1; });
+}
+
+}  // namespace
+
+using namespace bundle_files;
+
+void BundleParser::readMotion() {
+    const auto table = openCsv(kMotion);
+    CsvTable& csv = *table;
+    const QStringList expected{QStringLiteral("run"),   QStringLiteral("start_s"),
+                               QStringLiteral("end_s"), QStringLiteral("from_mm"),
+                               QStringLiteral("to_mm"), QStringLiteral("feed_mm_min")};
+    const std::vector<int> c = csv.requireExactly(expected);
+    Overrun overrun;
+    while (csv.next()) {
+        Run& run = m_campaign.runs[runOf(csv, c[0])];
+        MotionSegment m{csv.number(c[1]), csv.number(c[2]), csv.number(c[3]), csv.number(c[4]),
+                        csv.number(c[5])};
+        check(csv, c[1], impossibleTime(m.start_s));
+        check(csv, c[2], impossibleTime(m.end_s));
+        check(csv, c[5], impossibleAxisValue(kFeedColumn, m.feed_mm_min));
+        if (m.end_s < m.start_s)
+            csv.fail(c[2], QStringLiteral("segment ends (%1 s) before it starts (%2 s)")
+                               .arg(m.end_s)
+                               .arg(m.start_s));
+        if (!run.motion.empty() && m.start_s < run.motion.back().end_s)
+            csv.fail(c[1],
+                     QStringLiteral("time goes backwards in run '%1': segment starts at %2 s, "
+                                    "before the previous one ends (%3 s)")
+                         .arg(run.id)
+                         .arg(m.start_s)
+                         .arg(run.motion.back().end_s));
+        checkPosition(csv, c[3], m.from_mm, overrun);
+        checkPosition(csv, c[4], m.to_mm, overrun);
+        run.motion.push_back(m);
+    }
+    warnOverrun(kMotion, overrun);
+    reportProgress(csv, 0.0, 0.1);
+}
+
+void BundleParser::readPositioning() {
+    const auto table = openCsv(kPositioning);
+    CsvTable& csv = *table;
+    const QStringList expected{QStringLiteral("run"),       QStringLiteral("time_s"),
+                               QStringLiteral("cycle"),     QStringLiteral("target_mm"),
+                               QStringLiteral("direction"), QStringLiteral("deviation_um")};
+    const std::vector<int> c = csv.requireExactly(expected);
+    Overrun overrun;
+    QStringList otherSpellings;  // of a direction, as other software writes it
+    int otherSpellingLine = 0;
+    while (csv.next()) {
+        Run& run = m_campaign.runs[runOf(csv, c[0])];
+        PositioningMeasurement p;
+        p.time_s = csv.number(c[1]);
+        check(csv, c[1], impossibleTime(p.time_s));
+        if (!run.positioning.empty() && p.time_s < run.positioning.back().time_s)
+            csv.fail(c[1], QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
+                               .arg(run.id)
+                               .arg(p.time_s)
+                               .arg(run.positioning.back().time_s));
+        p.cycle = csv.integer(c[2]);
+        if (p.cycle < 0) csv.fail(c[2], QStringLiteral("cycle must not be negative"));
+        p.target_mm = csv.number(c[3]);
+        checkPosition(csv, c[3], p.target_mm, overrun);
+        const QString direction = csv.text(c[4]);
+        const std::optional<Direction> d = directionFromText(direction);
+        if (!d)
+            csv.fail(c[4], QStringLiteral("direction must be + or -, found '%1' (also read: "
+                                          "↑ ↓, up down, pos neg, +1 -1)")
+                               .arg(direction));
+        p.direction = *d;
+        if (direction != QLatin1String("+") && direction != QLatin1String("-") &&
+            !otherSpellings.contains(direction)) {
+            if (otherSpellings.isEmpty()) otherSpellingLine = csv.line();
+            otherSpellings << direction;
+        }
+        p.deviation_um = csv.number(c[5]);
+        check(csv, c[5], impossibleDeviation(p.deviation_um));
+        run.positioning.push_back(p);
+    }
+    warnOverrun(kPositioning, overrun);
+    if (!otherSpellings.isEmpty())
+        warnings << QStringLiteral(
+                        "%1:%2: direction written as %3: read as + (positive, ↑) and "
+                        "- (negative, ↓)")
+                        .arg(kPositioning)
+                        .arg(otherSpellingLine)
+                        .arg(QLatin1Char('\'') + otherSpellings.join(QStringLiteral("', '")) +
+                             QLatin1Char('\''));
+    for (const Run& run : m_campaign.runs) {
+        double largest_um = 0;
+        for (const PositioningMeasurement& p : run.positioning)
+            largest_um = std::max(largest_um, std::abs(p.deviation_um));
+        if (const auto why =
+                tinyMicrometres(run.positioning.size(), largest_um, QStringLiteral("deviations")))
+            warnings << QStringLiteral("%1: run '%2': %3").arg(kPositioning, run.id, *why);
+    }
+    reportProgress(csv, 0.1, 0.1);
+}
+
+/// Interferometer software often counts measurement cycles from 1. When no
+/// moving run has a cycle 0 and each begins with a whole pass of cycle 1 at its
+/// start, that pass is the cold reference: every cycle is counted one lower,
+/// with a warning. ISO 230-2 positioning runs keep their numbers (they need no
+/// reference). Called once the runs are on their own clocks.
+void BundleParser::countCyclesFromZero() {
+    QStringList runs;
+    for (const Run& run : m_campaign.runs) {
+        if (run.kind != RunKind::Moving || run.positioning.empty()) continue;
+        if (!firstPassIsCycleOneAtTheStart(run)) return;
+        runs << QLatin1Char('\'') + run.id + QLatin1Char('\'');
+    }
+    if (runs.isEmpty()) return;
+    for (Run& run : m_campaign.runs)
+        if (run.kind == RunKind::Moving)
+            for (PositioningMeasurement& m : run.positioning) --m.cycle;
+    warnings << QStringLiteral(
+                    "%1: the cycles of run(s) %2 are counted from 1, with no cycle 0: "
+                    "their first pass, cycle 1, is read as the cold reference (cycle 0) "
+                    "and every cycle is counted one lower")
+                    .arg(kPositioning, runs.join(QStringLiteral(", ")));
+}
+
+}  // namespace driftlab
