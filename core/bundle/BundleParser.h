@@ -52,6 +52,7 @@ private:
 
     void readSamples();
     void moveOntoRunClocks(const std::vector<std::optional<double>>& offset_s);
+    void warnNothingLogged(const std::vector<std::optional<double>>& firstRowSeen);
     void readMotion();
     void readPositioning();
     void countCyclesFromZero();

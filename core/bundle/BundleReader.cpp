@@ -238,6 +238,31 @@ void BundleParser::readSamples() {
     warnOverrun(kSamples, overrun);
     for (const QString& w : extents.warnings(m_campaign.runs))
         warnings << kSamples + QStringLiteral(": ") + w;
+    warnNothingLogged(offset_s);
+}
+
+/// What campaign.json declares and no file fills: a channel without a column
+/// (a writer that dropped or renamed it), a run without any record.
+void BundleParser::warnNothingLogged(const std::vector<std::optional<double>>& firstRowSeen) {
+    const auto quoted = [](const QString& id) {
+        return QLatin1Char('\'') + id + QLatin1Char('\'');
+    };
+    QStringList channels, runs;
+    for (const Channel& channel : m_campaign.channels)
+        if (std::find(m_campaign.sample_columns.begin(), m_campaign.sample_columns.end(),
+                      channel.id) == m_campaign.sample_columns.end())
+            channels << quoted(channel.id);
+    for (std::size_t r = 0; r < m_campaign.runs.size(); ++r) {
+        const Run& run = m_campaign.runs[r];
+        if (!firstRowSeen[r] && run.positioning.empty() && run.motion.empty())
+            runs << quoted(run.id);
+    }
+    if (!channels.isEmpty())
+        warnings << QStringLiteral("%1: no column for channel(s) %2 of %3: they carry no reading")
+                        .arg(kSamples, channels.join(QStringLiteral(", ")), kCampaign);
+    if (!runs.isEmpty())
+        warnings << QStringLiteral("run(s) %1 of %2 have no record in any file: no data")
+                        .arg(runs.join(QStringLiteral(", ")), kCampaign);
 }
 
 /// Runs logged on a logger's clock are counted from their first record,

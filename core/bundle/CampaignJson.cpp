@@ -40,7 +40,14 @@ public:
     std::optional<double> optionalNumber(const QString& key) {
         QJsonValue v = take(key);
         if (v.isUndefined()) return std::nullopt;
-        if (!v.isDouble()) fail(key, QStringLiteral("expected a number"));
+        if (!v.isDouble()) {
+            bool isNumber = false;
+            v.toString().toDouble(&isNumber);
+            fail(key, isNumber ? QStringLiteral("expected a number, found the text \"%1\" "
+                                                "(write a number without quotes)")
+                                     .arg(v.toString())
+                               : QStringLiteral("expected a number"));
+        }
         return v.toDouble();
     }
     double number(const QString& key) {
@@ -63,9 +70,9 @@ public:
         QJsonArray a = v.toArray();
         if (!v.isArray() || a.size() != 2 || !a[0].isDouble() || !a[1].isDouble())
             fail(key, QStringLiteral("expected [from_mm, to_mm]"));
-        if (!(a[0].toDouble() <= a[1].toDouble()))
-            fail(key, QStringLiteral("range start must not exceed its end"));
-        return RangeMm{a[0].toDouble(), a[1].toDouble()};
+        // A stroke written from its far end ([490, 210]) is the same range.
+        const double first = a[0].toDouble(), second = a[1].toDouble();
+        return RangeMm{std::min(first, second), std::max(first, second)};
     }
     ObjectReader object(const QString& key) {
         QJsonValue v = take(key);

@@ -4,6 +4,8 @@
 #include <QStringList>
 #include <cmath>
 
+#include "core/domain/NumberText.h"
+
 namespace driftlab {
 namespace {
 
@@ -17,10 +19,6 @@ constexpr double kMaxFeedMmMin = 1'000'000.0;
 constexpr double kMaxTorqueNm = 100'000.0;
 constexpr double kMaxTimeS = 1e7;
 
-QString number(double value) {
-    return QString::number(value, 'g', 10);
-}
-
 }  // namespace
 
 std::optional<QString> impossibleValue(Quantity quantity, double value, ChannelRole role) {
@@ -30,9 +28,9 @@ std::optional<QString> impossibleValue(Quantity quantity, double value, ChannelR
                 return QStringLiteral(
                            "%1 °C is impossible for a temperature on a machine tool "
                            "(%2…%3 °C)%4")
-                    .arg(number(value))
-                    .arg(number(kMinTemperatureC))
-                    .arg(number(kMaxTemperatureC))
+                    .arg(numberText(value))
+                    .arg(numberText(kMinTemperatureC))
+                    .arg(numberText(kMaxTemperatureC))
                     .arg(value > 250 && value < 400
                              ? QStringLiteral("; kelvin? DriftLab expects °C")
                              : QString());
@@ -40,26 +38,26 @@ std::optional<QString> impossibleValue(Quantity quantity, double value, ChannelR
                 return QStringLiteral(
                            "%1 °C looks like kelvin (no part of a feed axis runs that hot); "
                            "DriftLab expects °C")
-                    .arg(number(value));
+                    .arg(numberText(value));
             if ((role == ChannelRole::Ambient || role == ChannelRole::Air) && value > kMaxRoomC)
                 return QStringLiteral(
                            "%1 °C is no room's or air's temperature in a machine-tool lab "
                            "(at most %2 °C): °F? DriftLab expects °C")
-                    .arg(number(value))
-                    .arg(number(kMaxRoomC));
+                    .arg(numberText(value))
+                    .arg(numberText(kMaxRoomC));
             return std::nullopt;
         case Quantity::Displacement:
             if (std::abs(value) > kMaxDisplacementUm)
                 return QStringLiteral(
                            "%1 µm is beyond ±%2 µm for a drift probe (nm instead of µm?)")
-                    .arg(number(value))
-                    .arg(number(kMaxDisplacementUm));
+                    .arg(numberText(value))
+                    .arg(numberText(kMaxDisplacementUm));
             return std::nullopt;
         case Quantity::Speed:
             if (std::abs(value) > kMaxSpeedRpm)
                 return QStringLiteral("%1 rpm is beyond ±%2 rpm for a spindle speed")
-                    .arg(number(value))
-                    .arg(number(kMaxSpeedRpm));
+                    .arg(numberText(value))
+                    .arg(numberText(kMaxSpeedRpm));
             return std::nullopt;
     }
     return std::nullopt;
@@ -68,12 +66,12 @@ std::optional<QString> impossibleValue(Quantity quantity, double value, ChannelR
 std::optional<QString> impossibleAxisValue(const QString& column, double value) {
     if (column == kFeedColumn && std::abs(value) > kMaxFeedMmMin)
         return QStringLiteral("%1 mm/min is beyond ±%2 mm/min for a feed (mm/s or µm/min?)")
-            .arg(number(value))
-            .arg(number(kMaxFeedMmMin));
+            .arg(numberText(value))
+            .arg(numberText(kMaxFeedMmMin));
     if (column == kTorqueColumn && std::abs(value) > kMaxTorqueNm)
         return QStringLiteral("%1 N·m is beyond ±%2 N·m for a feed drive's torque")
-            .arg(number(value))
-            .arg(number(kMaxTorqueNm));
+            .arg(numberText(value))
+            .arg(numberText(kMaxTorqueNm));
     return std::nullopt;
 }
 
@@ -82,8 +80,8 @@ std::optional<QString> impossibleDeviation(double deviation_um) {
         return QStringLiteral(
                    "%1 µm is beyond ±%2 µm for a positioning deviation (nm instead "
                    "of µm?)")
-            .arg(number(deviation_um))
-            .arg(number(kMaxDisplacementUm));
+            .arg(numberText(deviation_um))
+            .arg(numberText(kMaxDisplacementUm));
     return std::nullopt;
 }
 
@@ -94,7 +92,7 @@ std::optional<QString> tinyMicrometres(std::size_t count, double largest_um, con
                "all %1 %2 are within ±%3 µm (largest %4 µm): mm instead of µm? Nothing on a "
                "machine tool is that steady; DriftLab reads them in µm")
         .arg(count)
-        .arg(what, number(kTinyUm), number(largest_um));
+        .arg(what, numberText(kTinyUm), numberText(largest_um));
 }
 
 std::optional<QString> impossibleTime(double time_s) {
@@ -103,8 +101,8 @@ std::optional<QString> impossibleTime(double time_s) {
     const double t = std::abs(time_s);
     if (t > kMaxTimeS)
         return QStringLiteral("%1 s is beyond %2 s since the run's start (%3)")
-            .arg(number(time_s))
-            .arg(number(kMaxTimeS))
+            .arg(numberText(time_s))
+            .arg(numberText(kMaxTimeS))
             .arg(t >= 1e9 && t < 1e10    ? QStringLiteral("Unix time? time_s counts from the "
                                                              "run's start: subtract its first time")
                  : t >= 1e12 && t < 1e13 ? QStringLiteral("Unix time in ms? time_s counts seconds "

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/domain/NumberText.h"
+
 namespace driftlab {
 namespace {
 
@@ -10,10 +12,6 @@ constexpr double kKelvinOffset = 273.15;
 double sigmaSquared_per_um2(double vacuumWavelength_nm) {
     const double lambda_um = vacuumWavelength_nm * 1e-3;
     return 1.0 / (lambda_um * lambda_um);
-}
-
-QString inputNumber(double value) {
-    return QString::number(value, 'g', 10);
 }
 
 }  // namespace
@@ -86,7 +84,7 @@ std::optional<QString> airStateProblem(const AirState& air) {
         return QStringLiteral("NaN or infinite air reading");
     if (t < -10.0 || t > 50.0)
         return QStringLiteral("air temperature %1 °C is outside −10…50 °C%2")
-            .arg(inputNumber(t))
+            .arg(numberText(t))
             .arg(t > 253 && t < 333 ? QStringLiteral(" (kelvin? DriftLab expects °C)") : QString());
     if (p < 60'000.0 || p > 120'000.0) {
         QString hint;
@@ -97,13 +95,13 @@ std::optional<QString> airStateProblem(const AirState& air) {
         else if (p >= 0.6 && p <= 1.2)
             hint = QStringLiteral(" (bar? DriftLab expects Pa)");
         return QStringLiteral("air pressure %1 Pa is outside 60000…120000 Pa%2")
-            .arg(inputNumber(p))
+            .arg(numberText(p))
             .arg(hint);
     }
     if (h < 0.0 || h > 100.0)
-        return QStringLiteral("relative humidity %1 % is outside 0…100 %").arg(inputNumber(h));
+        return QStringLiteral("relative humidity %1 % is outside 0…100 %").arg(numberText(h));
     if (air.co2_ppm < 0.0 || air.co2_ppm > 2000.0)
-        return QStringLiteral("CO2 %1 ppm is outside 0…2000 ppm").arg(inputNumber(air.co2_ppm));
+        return QStringLiteral("CO2 %1 ppm is outside 0…2000 ppm").arg(numberText(air.co2_ppm));
     return std::nullopt;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/bundle/ValueLimits.h"
+#include "core/domain/NumberText.h"
 
 namespace driftlab {
 namespace {
@@ -30,10 +31,6 @@ std::vector<std::string_view> split(std::string_view text) {
 
 QString qs(std::string_view text) {
     return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
-
-QString num(double value) {
-    return QString::number(value, 'g', 10);
 }
 
 }  // namespace
@@ -67,7 +64,7 @@ void InterferometerLineParser::checkTime(double time_s, const QString& field) {
     if (const auto problem = impossibleTime(time_s)) fail(field, *problem);
     if (m_lastTime_s && time_s < *m_lastTime_s)
         fail(field, QStringLiteral("time goes back from %1 s to %2 s")
-                        .arg(num(*m_lastTime_s), num(time_s)));
+                        .arg(numberText(*m_lastTime_s), numberText(time_s)));
     m_lastTime_s = time_s;
 }
 
@@ -191,7 +188,7 @@ InterferometerLine InterferometerLineParser::parse(std::string_view text) {
     if (std::abs(r.position_mm) > kMaxPositionMm)
         fail(QStringLiteral("position_mm"),
              QStringLiteral("%1 mm is beyond ±%2 mm (µm instead of mm?)")
-                 .arg(num(r.position_mm), num(kMaxPositionMm)));
+                 .arg(numberText(r.position_mm), numberText(kMaxPositionMm)));
     if (const auto problem = impossibleDeviation(r.deviation_um))
         fail(QStringLiteral("deviation_um"), *problem);
     checkTime(r.time_s, QStringLiteral("time_s"));

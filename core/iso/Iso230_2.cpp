@@ -4,6 +4,8 @@
 #include <map>
 #include <set>
 
+#include "core/domain/NumberText.h"
+
 namespace driftlab::iso {
 
 std::optional<Edition> editionFromString(const QString& text) {
@@ -71,10 +73,6 @@ struct Group {
         return d == Direction::Positive ? up : down;
     }
 };
-
-QString mmText(double value_mm) {
-    return QString::number(value_mm, 'g', 12);
-}
 
 QString directionText(Direction d) {
     return d == Direction::Positive ? QStringLiteral("+ (↑)") : QStringLiteral("- (↓)");
@@ -197,7 +195,7 @@ QStringList repeatedReadings(const std::vector<Group>& groups) {
                     warnings << QStringLiteral(
                                     "target %1 mm, direction %2, cycle %3: %4 readings; each is "
                                     "counted as an approach of its own")
-                                    .arg(mmText(g.target_mm), directionText(d))
+                                    .arg(numberText(g.target_mm), directionText(d))
                                     .arg(cycle)
                                     .arg(count);
         }
@@ -213,7 +211,7 @@ QString checkCounts(const std::vector<Group>& groups, const Settings& settings, 
                 *error = QStringLiteral(
                              "target %1 mm, direction %2: no reading; ISO 230-2 needs both "
                              "approaches at every target")
-                             .arg(mmText(g.target_mm), directionText(d));
+                             .arg(numberText(g.target_mm), directionText(d));
                 return {};
             }
     const double travel_mm = groups.back().target_mm - groups.front().target_mm;
@@ -221,11 +219,11 @@ QString checkCounts(const std::vector<Group>& groups, const Settings& settings, 
         for (Direction d : {Direction::Positive, Direction::Negative}) {
             if (g.of(d).size() >= 2) continue;
             const QString where = QStringLiteral("target %1 mm, direction %2")
-                                      .arg(mmText(g.target_mm), directionText(d));
+                                      .arg(numberText(g.target_mm), directionText(d));
             const QString rule = QStringLiteral(
                                      "ISO 230-2 allows one approach per direction only on axes "
                                      "over %1 mm; this travel is %2 mm")
-                                     .arg(mmText(settings.long_axis_mm), mmText(travel_mm));
+                                     .arg(numberText(settings.long_axis_mm), numberText(travel_mm));
             if (travel_mm <= settings.long_axis_mm) {
                 *error =
                     where +

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "core/domain/NumberText.h"
+
 namespace driftlab::iso {
 
 bool DriftSettings::isValid(QString* why) const {
@@ -45,10 +47,6 @@ bool windowWithin(const DriftSeries& s, std::size_t i, const DriftSettings& sett
     return hi - lo < settings.tolerance_um;
 }
 
-QString targetMmText(double value_mm) {
-    return QString::number(value_mm, 'g', 12);
-}
-
 QString quotedDirection(Direction d) {
     return d == Direction::Positive ? QStringLiteral("'+'") : QStringLiteral("'-'");
 }
@@ -85,7 +83,7 @@ std::optional<TargetDrift> targetDrift(const TargetGroup& group, Direction direc
                                           [](const auto* m) { return m->cycle == 0; });
     if (references != 1) {
         *error = QStringLiteral("target %1 mm, direction %2: %3 in cycle 0 (the cold reference)")
-                     .arg(targetMmText(group.target_mm), quotedDirection(direction),
+                     .arg(numberText(group.target_mm), quotedDirection(direction),
                           references == 0 ? QStringLiteral("no reading")
                                           : QStringLiteral("%1 readings").arg(references));
         return std::nullopt;

@@ -3,12 +3,10 @@
 #include <QRegularExpression>
 #include <cmath>
 
+#include "core/domain/NumberText.h"
+
 namespace driftlab::procedures {
 namespace {
-
-QString numberText(double value) {
-    return QString::number(value, 'g', 12);
-}
 
 /// A range as the procedure file writes it (an array), for its errors.
 QString jsonRangeText(const RangeMm& r) {

@@ -6,15 +6,13 @@
 #include <set>
 #include <stdexcept>
 
+#include "core/domain/NumberText.h"
+
 namespace driftlab::procedures {
 namespace {
 
-QString num(double value) {
-    return QString::number(value, 'g', 10);
-}
-
 QString rangeText(const RangeMm& r) {
-    return QStringLiteral("%1–%2 mm").arg(num(r.from_mm), num(r.to_mm));
+    return QStringLiteral("%1–%2 mm").arg(numberText(r.from_mm), numberText(r.to_mm));
 }
 
 void requireInside(const RangeMm& r, const RangeMm& travel_mm, const QString& what) {
@@ -43,7 +41,7 @@ PlannedRun positioningRun(const Procedure& p, const PositioningSpec& s) {
             .arg(s.cycles)
             .arg(s.order == ApproachOrder::Linear ? QStringLiteral("linear")
                                                   : QStringLiteral("pilgrim"))
-            .arg(num(s.feed_mm_min), num(s.overrun_mm), num(s.dwell_s));
+            .arg(numberText(s.feed_mm_min), numberText(s.overrun_mm), numberText(s.dwell_s));
     return run;
 }
 
@@ -73,10 +71,10 @@ PlannedRun thermalDistortionRun(const Procedure& p, const ThermalDistortionSpec&
                           "ISO 230-3 thermal distortion of the axis: reciprocating over %1 at %2 "
                           "mm/min, a pass over %3 targets every %4 s until two passes differ by at "
                           "most %5 µm (at most %6 s), then %7 s cool-down")
-                          .arg(rangeText(s.range_mm), num(s.feed_mm_min))
+                          .arg(rangeText(s.range_mm), numberText(s.feed_mm_min))
                           .arg(s.targets)
-                          .arg(num(s.interval_s), num(s.stabilisation_um), num(s.max_warmup_s),
-                               num(s.cooldown_s));
+                          .arg(numberText(s.interval_s), numberText(s.stabilisation_um),
+                               numberText(s.max_warmup_s), numberText(s.cooldown_s));
     return run;
 }
 
@@ -94,9 +92,9 @@ PlannedRun speedProgrammeRun(const Procedure& p, const QString& id, RunKind kind
     for (const SpindleBlock& b : blocks) {
         spec.blocks.push_back({b.duration_s, b.speed_rpm});
         run.duration_s += b.duration_s;
-        speeds << (b.speed_rpm == 0
-                       ? QStringLiteral("stop %1 s").arg(num(b.duration_s))
-                       : QStringLiteral("%1 rpm %2 s").arg(num(b.speed_rpm), num(b.duration_s)));
+        speeds << (b.speed_rpm == 0 ? QStringLiteral("stop %1 s").arg(numberText(b.duration_s))
+                                    : QStringLiteral("%1 rpm %2 s")
+                                          .arg(numberText(b.speed_rpm), numberText(b.duration_s)));
     }
     run.spindle = spec;
     run.description =
@@ -104,7 +102,7 @@ PlannedRun speedProgrammeRun(const Procedure& p, const QString& id, RunKind kind
             ? QStringLiteral(
                   "ETVE: machine at rest for %1 s while the room varies; drift probes "
                   "and temperatures logged")
-                  .arg(num(run.duration_s))
+                  .arg(numberText(run.duration_s))
             : QStringLiteral("ISO 230-3 spindle speed programme (%1), five drift probes")
                   .arg(speeds.join(QStringLiteral(", ")));
     return run;
@@ -130,8 +128,8 @@ PlannedRun movingStateRun(const Procedure& p, const MovingStatesSpec& s,
     run.duration_s = run.programme.duration_s;
     run.description =
         QStringLiteral("moving state: %1 mm/min over %2, %3 s warm-up, %4 s cool-down")
-            .arg(num(step.feed_mm_min), rangeText(step.range_mm), num(step.warmup_s),
-                 num(step.cooldown_s));
+            .arg(numberText(step.feed_mm_min), rangeText(step.range_mm), numberText(step.warmup_s),
+                 numberText(step.cooldown_s));
     return run;
 }
 
@@ -179,7 +177,7 @@ PlannedRun replanWarmupEnd(const PlannedRun& run, double warmupEnd_s) {
     shorter.duration_s = shorter.programme.duration_s;
     shorter.description =
         run.description +
-        QStringLiteral("; stabilised, warm-up ended at %1 s").arg(num(warmupEnd_s));
+        QStringLiteral("; stabilised, warm-up ended at %1 s").arg(numberText(warmupEnd_s));
     return shorter;
 }
 

@@ -259,6 +259,13 @@ const std::vector<BadBundleCase>& badBundleCases() {
              replaceInFile(file(d, "samples.csv"), "run,time_s,", "run,time,");
          },
          "samples.csv:1", "missing column 'time_s' in header: it has 'time', without its unit"},
+        {"number_in_quotes",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"lead_mm\": 10", "\"lead_mm\": \"10\"");
+         },
+         "campaign.json",
+         "screw.lead_mm: expected a number, found the text \"10\" (write a number without "
+         "quotes)"},
         {"no_format_key",
          [=](const QString& d) {
              replaceInFile(file(d, "campaign.json"), "\"format\": \"driftlab.campaign/1\",", "");

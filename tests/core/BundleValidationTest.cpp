@@ -97,7 +97,8 @@ TEST(BundleReader, aDriftProbeInMillimetresIsReadWithAWarning) {
 
 TEST(BundleReader, namesSpelledByHandAreTheNamesTheyMean) {
     // A hand-written campaign.json: "ETVE" as the acronym is written, a role
-    // capitalised or with '-' or a space for '_', a mounting in title case.
+    // capitalised or with '-' or a space for '_', a mounting in title case, a
+    // stroke written from its far end.
     QTemporaryDir dir;
     copyBundle(exampleBundlePath(), dir.path());
     const QString json = dir.filePath(QStringLiteral("campaign.json"));
@@ -108,6 +109,7 @@ TEST(BundleReader, namesSpelledByHandAreTheNamesTheyMean) {
     replaceInFile(json, "\"role\": \"tilt_a\"", "\"role\": \"tilt a\"");
     replaceInFile(json, "\"quantity\": \"displacement\"", "\"quantity\": \"Displacement\"");
     replaceInFile(json, "\"mounting\": \"fixed-free\"", "\"mounting\": \"Fixed-Free\"");
+    replaceInFile(json, "\"range_mm\": [\n        210,\n        490", "\"range_mm\": [490, 210");
     const BundleReadResult result = readBundle(dir.path());
     ASSERT_TRUE(result.ok()) << qPrintable(result.error->toString());
     EXPECT_EQ(*result.campaign, exampleCampaign());
@@ -120,4 +122,36 @@ TEST(BundleReader, namesSpelledByHandAreTheNamesTheyMean) {
         "unknown role 'nut flank' for a temperature channel (expected nut, bearing, ambient, "
         "air, structure, motor, spindle, other)")))
         << qPrintable(wrong.error->toString());
+}
+
+TEST(BundleReader, aDeclaredChannelWithoutAColumnAndARunWithoutRecordsAreNamed) {
+    // A writer that dropped the air thermometer's column and the spindle run's
+    // rows: each is possible, but the user should hear of it.
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    const QString samples = dir.filePath(QStringLiteral("samples.csv"));
+    const QList<QByteArray> lines = readFile(samples).split('\n');
+    const qsizetype air = lines.front().split(',').indexOf("T_air");
+    ASSERT_GT(air, 0);
+    QByteArrayList kept;
+    for (const QByteArray& line : lines) {
+        if (line.startsWith("SP1,") || line.isEmpty()) continue;
+        QByteArrayList cells = line.split(',');
+        cells.removeAt(air);
+        kept << cells.join(',');
+    }
+    writeFile(samples, kept.join('\n') + '\n');
+    const BundleReadResult result = readBundle(dir.path());
+    ASSERT_TRUE(result.ok()) << qPrintable(result.error->toString());
+    EXPECT_TRUE(result.warnings.contains(QStringLiteral(
+        "samples.csv: no column for channel(s) 'T_air' of campaign.json: they carry no reading")))
+        << qPrintable(result.warnings.join(QLatin1Char('\n')));
+    EXPECT_TRUE(result.warnings.contains(
+        QStringLiteral("run(s) 'SP1' of campaign.json have no record in any file: no data")))
+        << qPrintable(result.warnings.join(QLatin1Char('\n')));
+    // The example as written has a column for every channel and rows for every run.
+    const BundleReadResult plain = readBundle(exampleBundlePath());
+    ASSERT_TRUE(plain.ok());
+    EXPECT_FALSE(plain.warnings.join(QLatin1Char('\n')).contains(QStringLiteral("no data")));
+    EXPECT_FALSE(plain.warnings.join(QLatin1Char('\n')).contains(QStringLiteral("no column")));
 }
