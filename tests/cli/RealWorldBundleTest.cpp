@@ -2,37 +2,23 @@
 // every cell quoted, CRLF and a byte-order mark; a European spreadsheet export;
 // a tab-separated one with units in the header; two loggers merged row by row;
 // a run on a logger's clock; an interferometer's cycles counted from 1 with
-// arrows for directions; Info-ZIP archives; an axis that overruns its
-// travel to reverse. Each must import through the real driftlab-cli and give
-// the same campaign as the plain example; export never mixes two campaigns in
-// one folder.
+// arrows for directions; all of them at once with a hand-edited campaign.json.
+// Each must import through the real driftlab-cli and give the same campaign as
+// the plain example (archives and export: BundleArchiveExportTest.cpp).
 #include <gtest/gtest.h>
 #include <QDir>
 #include <QFileInfo>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 
 #include "core/bundle/BundleReader.h"
 #include "tests/cli/CliRunner.h"
+#include "tests/cli/RealWorldBundleSupport.h"
 #include "tests/core/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
 
 namespace {
-
-/// Runs a real tool (python3, zip) in `workDir`; fails the test if it fails.
-void runTool(const QString& program, const QStringList& args, const QString& workDir = {}) {
-    QProcess p;
-    if (!workDir.isEmpty()) p.setWorkingDirectory(workDir);
-    p.start(program, args);
-    ASSERT_TRUE(p.waitForFinished(60'000)) << qPrintable(program);
-    ASSERT_EQ(p.exitCode(), 0) << qPrintable(program) << ": "
-                               << p.readAllStandardError().constData();
-}
 
 /// Rewrites every CSV of a bundle as Python's csv module writes it for Excel:
 /// every cell quoted, CRLF line ends, a UTF-8 byte-order mark.
@@ -45,35 +31,6 @@ for path in glob.glob(sys.argv[1] + '/*.csv'):
         csv.writer(f, quoting=csv.QUOTE_ALL, lineterminator='\r\n').writerows(rows)
 )";
     runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromLatin1(script), bundle});
-}
-
-/// Imports `bundle` into a new store and exports it again: what DriftLab stored.
-Campaign importedAndExported(const QString& bundle, const QDir& work, QByteArray* err = nullptr) {
-    const QString db = work.filePath(QStringLiteral("lab.sqlite"));
-    QFile::remove(db);
-    CliResult imported = runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), db});
-    EXPECT_EQ(imported.exitCode, 0) << imported.err.constData();
-    if (err) *err = imported.err;
-    const QString out = work.filePath(QStringLiteral("exported"));
-    QDir(out).removeRecursively();
-    CliResult exported =
-        runCli({QStringLiteral("export"), QStringLiteral("--db"), db, QStringLiteral("--campaign"),
-                imported.out.trimmed(), QStringLiteral("--out"), out});
-    EXPECT_EQ(exported.exitCode, 0) << exported.err.constData();
-    BundleReadResult back = readBundle(out);
-    EXPECT_TRUE(back.ok());
-    return back.ok() ? *back.campaign : Campaign{};
-}
-
-/// Rewrites `bundle` with a Python script (given the folder) as other software
-/// would write it; imported and exported, it must be the plain example, and
-/// the import must warn `warning`.
-void expectRewrittenImportsAsThePlainBundle(const QString& bundle, const char* script,
-                                            const char* warning) {
-    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromUtf8(script), bundle});
-    QByteArray err;
-    EXPECT_EQ(importedAndExported(bundle, QFileInfo(bundle).dir(), &err), exampleCampaign());
-    EXPECT_TRUE(err.contains(warning)) << err.constData();
 }
 
 }  // namespace
@@ -252,122 +209,54 @@ csv.writer(open(path, 'w', newline='')).writerows(rows[:1] + [r for r in rows[1:
         << fit.err.constData();
 }
 
-TEST(RealWorldBundle, zipArchivesImportFromTheRootOrFromOneFolder) {
+TEST(RealWorldBundle, aForeignExportWithEveryQuirkAtOnceImportsAsThePlainBundle) {
+    // The quirks above, together, as one package and one hand-edited file would
+    // write them: each repair must leave the others' data alone (the cycles are
+    // renumbered on the run's own clock, after the logger's offset is taken off).
     QTemporaryDir dir;
-    const QString bundle = dir.filePath(QStringLiteral("campaign"));
+    const QString bundle = dir.filePath(QStringLiteral("foreign"));
     copyBundle(exampleBundlePath(), bundle);
-    runTool(QStringLiteral("zip"),
-            {QStringLiteral("-qr"), dir.filePath(QStringLiteral("root.zip")), QStringLiteral(".")},
-            bundle);
-    runTool(QStringLiteral("zip"),
-            {QStringLiteral("-qr"), QStringLiteral("folder.zip"), QStringLiteral("campaign")},
-            dir.path());
-    const QDir work(dir.path());
-    EXPECT_EQ(importedAndExported(work.filePath(QStringLiteral("root.zip")), work),
-              exampleCampaign());
-    EXPECT_EQ(importedAndExported(work.filePath(QStringLiteral("folder.zip")), work),
-              exampleCampaign());
-}
-
-TEST(RealWorldBundle, zipOfABundleAlreadyImportedAsAFolderIsNoticed) {
-    QTemporaryDir dir;
-    const QString bundle = dir.filePath(QStringLiteral("campaign"));
-    copyBundle(exampleBundlePath(), bundle);
-    runTool(QStringLiteral("zip"),
-            {QStringLiteral("-qr"), QStringLiteral("campaign.zip"), QStringLiteral("campaign")},
-            dir.path());
-    const QString db = dir.filePath(QStringLiteral("lab.sqlite"));
-    ASSERT_EQ(runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), db}).exitCode, 0);
-    const QByteArray before = sha256OfFile(db);
-    CliResult again =
-        runCli({QStringLiteral("import"), dir.filePath(QStringLiteral("campaign.zip")),
-                QStringLiteral("--db"), db});
-    EXPECT_EQ(again.exitCode, 1);
-    EXPECT_TRUE(reason(again.err).contains("as campaign 1") &&
-                reason(again.err).contains("--again imports it once more"))
-        << again.err.constData();
-    EXPECT_EQ(sha256OfFile(db), before);
-}
-
-TEST(RealWorldBundle, overrunPastTheTravelIsAcceptedWithOneWarning) {
-    QTemporaryDir dir;
-    const QString bundle = dir.filePath(QStringLiteral("overrun"));
-    copyBundle(exampleBundlePath(), bundle);
-    // ISO 230-2: the axis runs 1.25 mm past the last target to reverse.
-    replaceInFile(QDir(bundle).filePath(QStringLiteral("samples.csv")), ",423.333,8000,",
-                  ",701.25,8000,");
-    replaceInFile(QDir(bundle).filePath(QStringLiteral("samples.csv")), ",343.333,-8000,",
-                  ",-3.5,-8000,");
-    CliResult r = runCli({QStringLiteral("info"), bundle, QStringLiteral("--json")});
-    ASSERT_EQ(r.exitCode, 0) << r.err.constData();
-    EXPECT_TRUE(
-        r.err.contains("warning: samples.csv:3: 2 position(s) outside the travel [0, 700] "
-                       "mm, up to 3.5 mm past it (overrun to reverse; accepted)"))
-        << r.err.constData();
-}
-
-TEST(RealWorldBundle, exportNeverMixesTwoCampaignsInOneFolder) {
-    QTemporaryDir dir;
-    const QString db = dir.filePath(QStringLiteral("lab.sqlite"));
-    // Campaign 1 has positioning readings; campaign 2 has none.
-    const QString noPositioning = dir.filePath(QStringLiteral("no-positioning"));
-    copyBundle(exampleBundlePath(), noPositioning);
-    QFile::remove(QDir(noPositioning).filePath(QStringLiteral("positioning.csv")));
-    replaceInFile(QDir(noPositioning).filePath(QStringLiteral("campaign.json")),
-                  "X axis moving-state example", "Second campaign");
-    ASSERT_EQ(runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), db})
-                  .exitCode,
-              0);
-    ASSERT_EQ(
-        runCli({QStringLiteral("import"), noPositioning, QStringLiteral("--db"), db}).exitCode, 0);
-    const QString out = dir.filePath(QStringLiteral("out"));
-    auto exportCampaign = [&](const char* id, bool force) {
-        QStringList args{
-            QStringLiteral("export"), QStringLiteral("--db"),  db, QStringLiteral("--campaign"),
-            QString::fromLatin1(id),  QStringLiteral("--out"), out};
-        if (force) args << QStringLiteral("--force");
-        return runCli(args);
-    };
-    ASSERT_EQ(exportCampaign("1", false).exitCode, 0);
-    const QByteArray firstExport = readFile(QDir(out).filePath(QStringLiteral("samples.csv")));
-
-    CliResult refused = exportCampaign("2", false);
-    EXPECT_EQ(refused.exitCode, 1);
-    EXPECT_TRUE(reason(refused.err)
-                    .contains("is not empty (campaign.json, motion.csv, "
-                              "positioning.csv, samples.csv)"))
-        << refused.err.constData();
-    EXPECT_EQ(readFile(QDir(out).filePath(QStringLiteral("samples.csv"))), firstExport);
-
-    ASSERT_EQ(exportCampaign("2", true).exitCode, 0);
-    EXPECT_FALSE(QFile::exists(QDir(out).filePath(QStringLiteral("positioning.csv"))))
-        << "a stale file of the first campaign survived the replacement";
-    CliResult info = runCli({QStringLiteral("info"), out, QStringLiteral("--json")});
-    const QJsonObject json = QJsonDocument::fromJson(info.out).object();
-    EXPECT_EQ(json[QStringLiteral("name")].toString(), QStringLiteral("Second campaign"));
-    EXPECT_EQ(
-        json[QStringLiteral("runs")].toArray()[0].toObject()[QStringLiteral("positioning")].toInt(),
-        0);
-    EXPECT_TRUE(QDir(dir.path())
-                    .entryList({QStringLiteral("out.*")}, QDir::AllEntries | QDir::NoDotAndDotDot)
-                    .isEmpty())
-        << "staging folders left behind";
-}
-
-TEST(RealWorldBundle, forceNeverReplacesAFolderThatIsNotABundle) {
-    QTemporaryDir dir;
-    const QString db = dir.filePath(QStringLiteral("lab.sqlite"));
-    ASSERT_EQ(runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), db})
-                  .exitCode,
-              0);
-    const QString home = dir.filePath(QStringLiteral("home"));
-    QDir().mkpath(home);
-    writeFile(QDir(home).filePath(QStringLiteral("thesis.tex")), "months of work");
-    CliResult r =
-        runCli({QStringLiteral("export"), QStringLiteral("--db"), db, QStringLiteral("--campaign"),
-                QStringLiteral("1"), QStringLiteral("--out"), home, QStringLiteral("--force")});
-    EXPECT_EQ(r.exitCode, 1);
-    EXPECT_TRUE(reason(r.err).contains("holds files that are not a bundle's (thesis.tex)"))
-        << r.err.constData();
-    EXPECT_EQ(readFile(QDir(home).filePath(QStringLiteral("thesis.tex"))), "months of work");
+    const char* script = R"(
+import csv, json, sys
+d = sys.argv[1] + '/'
+c = json.load(open(d + 'campaign.json', encoding='utf-8'))
+c['screw']['mounting'] = c['screw']['mounting'].title()
+for ch in c['channels']:
+    ch['role'] = ch['role'].replace('_', '-').title()
+for run in c['runs']:
+    run['kind'] = run['kind'].upper()
+    if 'range_mm' in run:
+        run['range_mm'].reverse()
+json.dump(c, open(d + 'campaign.json', 'w', encoding='utf-8'), indent=1, ensure_ascii=False)
+unit = {'T': ' [°C]', 'D': ' (µm)', 'S': ' [rpm]'}
+for name, times in (('samples', [1]), ('positioning', [1]), ('motion', [1, 2])):
+    rows = list(csv.reader(open(d + name + '.csv', newline='')))
+    for row in rows[1:]:
+        if row[0] == 'S1':
+            for i in times: row[i] = '%.3f' % (float(row[i]) + 5000)
+        if name == 'positioning':
+            row[2] = str(int(row[2]) + 1)
+            row[4] = {'+': '\u2191', '-': '\u2193'}[row[4]]
+    if name == 'samples':
+        rows[0] = [h + unit.get(h[0], '') if h[1:2] == '_' else h for h in rows[0]]
+    rows = [rows[0]] + [[v.replace('.', ',') for v in row] for row in rows[1:]]
+    with open(d + name + '.csv', 'w', newline='', encoding='utf-8-sig') as f:
+        csv.writer(f, delimiter=';', lineterminator='\r\n').writerows(rows)
+)";
+    expectRewrittenImportsAsThePlainBundle(
+        bundle, script,
+        "warning: positioning.csv: the cycles of run(s) 'S1' are counted from 1, with no cycle 0");
+    EXPECT_TRUE(readFile(QDir(bundle).filePath(QStringLiteral("samples.csv")))
+                    .startsWith("\xEF\xBB\xBFrun;time_s;T_nut [\xC2\xB0"
+                                "C];"));
+    EXPECT_TRUE(readFile(QDir(bundle).filePath(QStringLiteral("campaign.json")))
+                    .contains("\"kind\": \"SPINDLE\""));
+    const BundleReadResult read = readBundle(bundle);
+    ASSERT_TRUE(read.ok());
+    const QString warnings = read.warnings.join(QLatin1Char('\n'));
+    for (const char* expected :
+         {"samples.csv: read as ';'-separated with decimal commas",
+          "run(s) starting late in every file, as on a logger's clock: 'S1' at 5000 s",
+          "positioning.csv:2: direction written as '\u2191', '\u2193'"})
+        EXPECT_TRUE(warnings.contains(QString::fromUtf8(expected))) << qPrintable(warnings);
 }

@@ -1,0 +1,52 @@
+#include "tests/cli/RealWorldBundleSupport.h"
+
+#include <gtest/gtest.h>
+#include <QFileInfo>
+#include <QProcess>
+
+#include "core/bundle/BundleReader.h"
+#include "tests/cli/CliRunner.h"
+#include "tests/core/BundleTestSupport.h"
+
+namespace driftlab::test {
+
+/// Runs a real tool (python3, zip) in `workDir`; fails the test if it fails.
+void runTool(const QString& program, const QStringList& args, const QString& workDir) {
+    QProcess p;
+    if (!workDir.isEmpty()) p.setWorkingDirectory(workDir);
+    p.start(program, args);
+    ASSERT_TRUE(p.waitForFinished(60'000)) << qPrintable(program);
+    ASSERT_EQ(p.exitCode(), 0) << qPrintable(program) << ": "
+                               << p.readAllStandardError().constData();
+}
+
+/// Imports `bundle` into a new store and exports it again: what DriftLab stored.
+Campaign importedAndExported(const QString& bundle, const QDir& work, QByteArray* err) {
+    const QString db = work.filePath(QStringLiteral("lab.sqlite"));
+    QFile::remove(db);
+    CliResult imported = runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), db});
+    EXPECT_EQ(imported.exitCode, 0) << imported.err.constData();
+    if (err) *err = imported.err;
+    const QString out = work.filePath(QStringLiteral("exported"));
+    QDir(out).removeRecursively();
+    CliResult exported =
+        runCli({QStringLiteral("export"), QStringLiteral("--db"), db, QStringLiteral("--campaign"),
+                imported.out.trimmed(), QStringLiteral("--out"), out});
+    EXPECT_EQ(exported.exitCode, 0) << exported.err.constData();
+    BundleReadResult back = readBundle(out);
+    EXPECT_TRUE(back.ok());
+    return back.ok() ? *back.campaign : Campaign{};
+}
+
+/// Rewrites `bundle` with a Python script (given the folder) as other software
+/// would write it; imported and exported, it must be the plain example, and
+/// the import must warn `warning`.
+void expectRewrittenImportsAsThePlainBundle(const QString& bundle, const char* script,
+                                            const char* warning) {
+    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromUtf8(script), bundle});
+    QByteArray err;
+    EXPECT_EQ(importedAndExported(bundle, QFileInfo(bundle).dir(), &err), exampleCampaign());
+    EXPECT_TRUE(err.contains(warning)) << err.constData();
+}
+
+}  // namespace driftlab::test
