@@ -26,7 +26,7 @@ std::vector<iso::Reading> readCsv(const QString& path) {
         const int cycle = table.requireColumn(QStringLiteral("cycle"));
         const int deviation = table.requireColumn(QStringLiteral("deviation_um"));
         while (table.next()) {
-            const auto d = iso::parseDirection(table.field(direction));
+            const auto d = directionFromText(table.text(direction));
             if (!d)
                 table.fail(direction, QStringLiteral("direction must be '+' (positive approach, "
                                                      "↑) or '-' (negative approach, ↓), not '%1'")

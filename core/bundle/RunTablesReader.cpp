@@ -11,22 +11,6 @@
 namespace driftlab {
 namespace {
 
-/// A direction of approach as DriftLab writes it (+, -) or as other software
-/// does: ISO 230-2's arrows, words, a sign with a one, a typographic minus.
-std::optional<Direction> directionFromText(const QString& text) {
-    static const QStringList positive{QStringLiteral("+"),   QStringLiteral("+1"),
-                                      QStringLiteral("↑"),   QStringLiteral("up"),
-                                      QStringLiteral("pos"), QStringLiteral("positive")};
-    static const QStringList negative{QStringLiteral("-"),       QStringLiteral("-1"),
-                                      QStringLiteral("−"),       QStringLiteral("↓"),
-                                      QStringLiteral("down"),    QStringLiteral("neg"),
-                                      QStringLiteral("negative")};
-    const QString t = text.toLower();
-    if (positive.contains(t)) return Direction::Positive;
-    if (negative.contains(t)) return Direction::Negative;
-    return std::nullopt;
-}
-
 /// Whether a moving run's readings, on the run's clock, have no cycle 0 and
 /// begin with a whole pass of cycle 1 at its start, where DESIGN.md §2 puts
 /// cycle 0. A run that lost its cold pass starts with cycle 1 later, warm.
@@ -108,8 +92,7 @@ void BundleParser::readPositioning() {
                                           "↑ ↓, up down, pos neg, +1 -1)")
                                .arg(direction));
         p.direction = *d;
-        if (direction != QLatin1String("+") && direction != QLatin1String("-") &&
-            !otherSpellings.contains(direction)) {
+        if (isOtherDirectionSpelling(direction) && !otherSpellings.contains(direction)) {
             if (otherSpellings.isEmpty()) otherSpellingLine = csv.line();
             otherSpellings << direction;
         }

@@ -1,5 +1,7 @@
 #include "core/domain/Run.h"
 
+#include <QStringList>
+
 #include <algorithm>
 #include <cstring>
 
@@ -24,6 +26,27 @@ std::optional<RunKind> runKindFromString(const QString& text) {
         if (toString(kind).compare(text.trimmed(), Qt::CaseInsensitive) == 0)
             return kind;  // "ETVE"
     return std::nullopt;
+}
+
+std::optional<Direction> directionFromText(const QString& text) {
+    // '+' is the approach from below towards +x: ↑. A tool that swaps the two
+    // swaps the sign of every ISO 230-2 B_i and exchanges R↑/R↓, E↑/E↓ and A↑/A↓.
+    static const QStringList positive{QStringLiteral("+"),   QStringLiteral("+1"),
+                                      QStringLiteral("↑"),   QStringLiteral("up"),
+                                      QStringLiteral("pos"), QStringLiteral("positive")};
+    static const QStringList negative{QStringLiteral("-"),       QStringLiteral("-1"),
+                                      QStringLiteral("−"),       QStringLiteral("↓"),
+                                      QStringLiteral("down"),    QStringLiteral("neg"),
+                                      QStringLiteral("negative")};
+    const QString t = text.trimmed().toLower();
+    if (positive.contains(t)) return Direction::Positive;
+    if (negative.contains(t)) return Direction::Negative;
+    return std::nullopt;
+}
+
+bool isOtherDirectionSpelling(const QString& text) {
+    const QString t = text.trimmed();
+    return t != QLatin1String("+") && t != QLatin1String("-") && directionFromText(t);
 }
 
 bool isFeedAxisRun(RunKind kind) {

@@ -32,16 +32,6 @@ QString toString(Edition edition) {
     return QStringLiteral("ISO 230-2:%1").arg(editionYear(edition));
 }
 
-std::optional<Direction> parseDirection(std::string_view text) {
-    while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-    while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
-    // '+' is the approach from below towards +x: ↑. A tool that swaps the two
-    // swaps the sign of every B_i and exchanges R↑/R↓, E↑/E↓ and A↑/A↓.
-    if (text == "+") return Direction::Positive;
-    if (text == "-") return Direction::Negative;
-    return std::nullopt;
-}
-
 std::vector<Reading> readingsOf(const Run& run) {
     std::vector<Reading> readings;
     readings.reserve(run.positioning.size());

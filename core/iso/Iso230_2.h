@@ -12,7 +12,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <string_view>
 #include <vector>
 
 #include "core/domain/Run.h"
@@ -27,10 +26,6 @@ std::optional<Edition> editionFromString(const QString& text);
 QString toString(Edition edition);
 /// The year alone, 2014, for scripts.
 int editionYear(Edition edition);
-
-/// '+' is the positive approach ↑, '-' the negative approach ↓ (surrounding
-/// blanks allowed); nullopt for anything else.
-std::optional<Direction> parseDirection(std::string_view text);
 
 /// One reading of the interferometer at a target, approached in one direction.
 struct Reading {

@@ -121,13 +121,13 @@ TEST(Iso230Cli, badDirectionNamesFileLineAndColumn) {
     const QString path = writeFile(dir, QStringLiteral("bad.csv"),
                                    "target_mm,direction,cycle,deviation_um\n"
                                    "0,+,1,2\n"
-                                   "0,up,2,4\n");
+                                   "0,both,2,4\n");
     const CliResult r = iso({path});
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_EQ(r.out, QByteArray());
     EXPECT_EQ(reason(r.err), "driftlab-cli iso230-2: " + path.toUtf8() +
                                  ":3:2: direction must be '+' (positive approach, ↑) or '-' "
-                                 "(negative approach, ↓), not 'up'");
+                                 "(negative approach, ↓), not 'both'");
 }
 
 TEST(Iso230Cli, missingColumnAndTooFewReadingsAreNamed) {

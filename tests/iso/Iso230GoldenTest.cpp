@@ -25,12 +25,17 @@ Evaluation evaluateOk(const std::vector<Reading>& readings, const Settings& sett
 }
 
 TEST(Iso230Golden, plusIsThePositiveApproach) {
-    EXPECT_EQ(parseDirection("+"), Direction::Positive);
-    EXPECT_EQ(parseDirection("-"), Direction::Negative);
-    EXPECT_EQ(parseDirection(" + "), Direction::Positive);
-    EXPECT_EQ(parseDirection("up"), std::nullopt);
-    EXPECT_EQ(parseDirection(""), std::nullopt);
-    EXPECT_EQ(parseDirection("+-"), std::nullopt);
+    EXPECT_EQ(directionFromText(QStringLiteral("+")), Direction::Positive);
+    EXPECT_EQ(directionFromText(QStringLiteral("-")), Direction::Negative);
+    EXPECT_EQ(directionFromText(QStringLiteral(" + ")), Direction::Positive);
+    // As interferometer packages write them.
+    EXPECT_EQ(directionFromText(QStringLiteral("↑")), Direction::Positive);
+    EXPECT_EQ(directionFromText(QStringLiteral("Down")), Direction::Negative);
+    EXPECT_EQ(directionFromText(QStringLiteral("−")), Direction::Negative);  // U+2212
+    EXPECT_EQ(directionFromText(QStringLiteral("+1")), Direction::Positive);
+    EXPECT_EQ(directionFromText(QStringLiteral("1")), std::nullopt);
+    EXPECT_EQ(directionFromText(QString()), std::nullopt);
+    EXPECT_EQ(directionFromText(QStringLiteral("+-")), std::nullopt);
     // G1's '+' readings at 0 mm are 2, 4, 3, 4, 2: x̄↑ = 3, x̄↓ = −2, so
     // B_0 = x̄↑ − x̄↓ = +5; swapped directions would give −5 and E↑ = 7.
     const Evaluation e = evaluateOk(golden3x5());

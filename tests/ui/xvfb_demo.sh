@@ -4,7 +4,8 @@
 # every page is written. Usage: xvfb_demo.sh DRIFTLAB OUT_DIR
 set -euo pipefail
 app=$1 out=$2
-rm -rf "$out" && mkdir -p "$out/home"
+# Qt wants the runtime folder private (0700), as a login session makes it.
+rm -rf "$out" && mkdir -p "$out/home" && chmod 700 "$out/home"
 # A fresh HOME: first start, no settings or demo store from a previous run.
 HOME="$out/home" XDG_RUNTIME_DIR="$out/home" timeout 300 \
     xvfb-run -a -s "-screen 0 1280x800x24" "$app" --demo --autopilot --screenshots "$out/shots"
