@@ -23,6 +23,14 @@ inline const QString kPositioning = QStringLiteral("positioning.csv");
 
 namespace driftlab {
 
+/// The latest time of a run in motion.csv or positioning.csv and where it
+/// stands: checked on the run's clock once samples.csv has set that clock.
+struct LatestRecord {
+    double time_s = -std::numeric_limits<double>::infinity();
+    int line = 0;
+    int column = 0;
+};
+
 /// Positions past the travel: an axis overshoots its end targets to reverse
 /// (ISO 230-2 overrun), so they are normal; counted for one warning per file.
 struct Overrun {
@@ -53,6 +61,9 @@ private:
     void readSamples();
     void moveOntoRunClocks(const std::vector<std::optional<double>>& offset_s);
     void warnNothingLogged(const std::vector<std::optional<double>>& firstRowSeen);
+    void checkRunClockTimes(const std::vector<std::optional<double>>& offset_s) const;
+    void noteLatest(std::vector<LatestRecord>& latest, std::size_t run, const CsvTable& csv,
+                    int column, double time_s);
     void readMotion();
     void readPositioning();
     void countCyclesFromZero();
@@ -61,6 +72,7 @@ private:
     const BundleReadOptions& m_options;
     Campaign m_campaign;
     QHash<QString, int> m_runIndex;
+    std::vector<LatestRecord> m_latestMotion, m_latestPositioning;  // per run
     double m_positionMin_mm = -std::numeric_limits<double>::infinity();
     double m_positionMax_mm = std::numeric_limits<double>::infinity();
 };

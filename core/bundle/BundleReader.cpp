@@ -1,5 +1,6 @@
 #include "core/bundle/BundleReader.h"
 
+#include <QDateTime>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,6 +11,7 @@
 #include "core/bundle/CampaignJson.h"
 #include "core/bundle/SampleRows.h"
 #include "core/bundle/ValueLimits.h"
+#include "core/domain/NumberText.h"
 
 namespace driftlab {
 
@@ -182,12 +184,13 @@ void BundleParser::readSamples() {
             runIndex = runOf(csv, runCol);
             lastRunId.assign(id);
         }
-        check(csv, timeCol, impossibleTime(csv.number(timeCol)));
+        check(csv, timeCol, impossibleClockTime(csv.number(timeCol)));
         HeldRow& last = held[runIndex];
         if (!offset_s[runIndex])
             offset_s[runIndex] =
                 loggerClockOffset_s(m_campaign.runs[runIndex], csv.number(timeCol));
         const double t = onRunClock(csv.number(timeCol), *offset_s[runIndex]);
+        check(csv, timeCol, impossibleTime(t));
         if (t < last.time_s)
             csv.fail(timeCol, QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
                                   .arg(m_campaign.runs[runIndex].id)
@@ -268,11 +271,19 @@ void BundleParser::warnNothingLogged(const std::vector<std::optional<double>>& f
 /// Runs logged on a logger's clock are counted from their first record,
 /// with one warning naming them.
 void BundleParser::moveOntoRunClocks(const std::vector<std::optional<double>>& offset_s) {
+    checkRunClockTimes(offset_s);
     QStringList moved;
     for (std::size_t r = 0; r < offset_s.size(); ++r) {
-        if (!offset_s[r].value_or(0.0)) continue;
-        moveOntoRunClock(m_campaign.runs[r], *offset_s[r]);
-        moved << QStringLiteral("'%1' at %2 s").arg(m_campaign.runs[r].id).arg(*offset_s[r]);
+        const double offset = offset_s[r].value_or(0.0);
+        if (!offset) continue;
+        moveOntoRunClock(m_campaign.runs[r], offset);
+        moved << QStringLiteral("'%1' at %2 s%3")
+                     .arg(m_campaign.runs[r].id, numberText(offset),
+                          offset >= 1e9
+                              ? QStringLiteral(" (Unix time: %1)")
+                                    .arg(QDateTime::fromSecsSinceEpoch(qint64(offset), Qt::UTC)
+                                             .toString(Qt::ISODate))
+                              : QString());
     }
     if (!moved.isEmpty())
         warnings << QStringLiteral(

@@ -36,11 +36,13 @@ void BundleParser::readMotion() {
     const std::vector<int> c = csv.requireExactly(expected);
     Overrun overrun;
     while (csv.next()) {
-        Run& run = m_campaign.runs[runOf(csv, c[0])];
+        const std::size_t r = runOf(csv, c[0]);
+        Run& run = m_campaign.runs[r];
         MotionSegment m{csv.number(c[1]), csv.number(c[2]), csv.number(c[3]), csv.number(c[4]),
                         csv.number(c[5])};
-        check(csv, c[1], impossibleTime(m.start_s));
-        check(csv, c[2], impossibleTime(m.end_s));
+        check(csv, c[1], impossibleClockTime(m.start_s));
+        check(csv, c[2], impossibleClockTime(m.end_s));
+        noteLatest(m_latestMotion, r, csv, c[2], m.end_s);
         check(csv, c[5], impossibleAxisValue(kFeedColumn, m.feed_mm_min));
         if (m.end_s < m.start_s)
             csv.fail(c[2], QStringLiteral("segment ends (%1 s) before it starts (%2 s)")
@@ -72,10 +74,12 @@ void BundleParser::readPositioning() {
     QStringList otherSpellings;  // of a direction, as other software writes it
     int otherSpellingLine = 0;
     while (csv.next()) {
-        Run& run = m_campaign.runs[runOf(csv, c[0])];
+        const std::size_t r = runOf(csv, c[0]);
+        Run& run = m_campaign.runs[r];
         PositioningMeasurement p;
         p.time_s = csv.number(c[1]);
-        check(csv, c[1], impossibleTime(p.time_s));
+        check(csv, c[1], impossibleClockTime(p.time_s));
+        noteLatest(m_latestPositioning, r, csv, c[1], p.time_s);
         if (!run.positioning.empty() && p.time_s < run.positioning.back().time_s)
             csv.fail(c[1], QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
                                .arg(run.id)
@@ -118,6 +122,30 @@ void BundleParser::readPositioning() {
             warnings << QStringLiteral("%1: run '%2': %3").arg(kPositioning, run.id, *why);
     }
     reportProgress(csv, 0.1, 0.1);
+}
+
+void BundleParser::noteLatest(std::vector<LatestRecord>& latest, std::size_t run,
+                              const CsvTable& csv, int column, double time_s) {
+    latest.resize(m_campaign.runs.size());
+    if (time_s >= latest[run].time_s) latest[run] = {time_s, csv.line(), column + 1};
+}
+
+/// Motion and positioning times may be on a logger's clock until samples.csv
+/// has set each run's clock (loggerClockOffset_s); on it, each must be a time
+/// since the run's start. A run whose samples start at 0 s keeps its Unix
+/// times in positioning.csv, and they are refused where they stand.
+void BundleParser::checkRunClockTimes(const std::vector<std::optional<double>>& offset_s) const {
+    const std::pair<const QString&, const std::vector<LatestRecord>&> files[] = {
+        {kMotion, m_latestMotion}, {kPositioning, m_latestPositioning}};
+    for (const auto& [file, latest] : files)
+        for (std::size_t r = 0; r < latest.size(); ++r) {
+            if (!latest[r].line) continue;
+            const double t = onRunClock(latest[r].time_s, offset_s[r].value_or(0.0));
+            if (const auto why = impossibleTime(t))
+                throw BundleException(
+                    {file, latest[r].line, latest[r].column,
+                     QStringLiteral("run '%1': %2").arg(m_campaign.runs[r].id, *why)});
+        }
 }
 
 /// Interferometer software often counts measurement cycles from 1. When no

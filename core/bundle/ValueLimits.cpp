@@ -111,6 +111,10 @@ std::optional<QString> impossibleTime(double time_s) {
     return std::nullopt;
 }
 
+std::optional<QString> impossibleClockTime(double time_s) {
+    return std::abs(time_s) > 1e10 ? impossibleTime(time_s) : std::nullopt;
+}
+
 std::optional<HeaderWithUnit> splitHeaderUnit(const QString& header) {
     static const QRegularExpression withUnit(
         QStringLiteral(R"(^\s*([A-Za-z0-9_]+)\s*(?:\[\s*([^\]]+?)\s*\]|\(\s*([^)]+?)\s*\))\s*$)"));

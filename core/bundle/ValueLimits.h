@@ -31,6 +31,10 @@ std::optional<QString> impossibleDeviation(double deviation_um);
 std::optional<QString> tinyMicrometres(std::size_t count, double largest_um, const QString& what);
 /// A time in s since the run's start: within ±1e7 s (four months).
 std::optional<QString> impossibleTime(double time_s);
+/// A time as a file gives it, before a logger's clock is taken off (see
+/// loggerClockOffset_s): within ±1e10 s, as far as Unix time in seconds goes.
+/// The time on the run's clock must then pass impossibleTime.
+std::optional<QString> impossibleClockTime(double time_s);
 
 /// A samples.csv header that names its unit, as loggers write it:
 /// "T_nut [°C]", "D_z (µm)".

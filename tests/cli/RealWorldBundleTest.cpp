@@ -136,6 +136,16 @@ for name, columns in (('samples', ['time_s']), ('positioning', ['time_s']),
         "warning: run(s) starting late in every file, as on a logger's clock: 'S1' at 5000 s; "
         "counted from their first record");
 
+    // The same on a logger whose clock is Unix time, in seconds since 1970.
+    const QString unix = dir.filePath(QStringLiteral("unix"));
+    copyBundle(exampleBundlePath(), unix);
+    const QByteArray toUnixTime =
+        QByteArray(script).replace("float(row[i]) + 5000", "float(row[i]) + 1795000000");
+    expectRewrittenImportsAsThePlainBundle(
+        unix, toUnixTime.constData(),
+        "warning: run(s) starting late in every file, as on a logger's clock: 'S1' at "
+        "1795000000 s (Unix time: 2026-11-18T11:06:40Z); counted from their first record");
+
     // Only the thermometers late, the motion from 0 s: a logger that started
     // late. Its times are kept, and the models name the hole.
     copyBundle(exampleBundlePath(), dir.filePath(QStringLiteral("late")));

@@ -337,6 +337,13 @@ const std::vector<BadBundleCase>& badBundleCases() {
              replaceInFile(file(d, "samples.csv"), "\nS1,10,", "\nS1,1795000010,");
          },
          "samples.csv:3:2", "Unix time? time_s counts from the run's start"},
+        {"positioning_on_a_unix_clock_beside_samples_from_zero",
+         [=](const QString& d) {
+             rewriteColumn(file(d, "positioning.csv"), 1,
+                           [](double t) { return QByteArray::number(t + 1795000000, 'f', 3); });
+         },
+         "positioning.csv:155:2",
+         "run 'S1': 1795003582 s is beyond 10000000 s since the run's start (Unix time?"},
         {"feed_in_micrometres_per_minute",
          [=](const QString& d) {
              replaceInFile(file(d, "samples.csv"), ",423.333,8000,", ",423.333,8000000,");
