@@ -5,6 +5,9 @@
 #include <limits>
 #include <numeric>
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
 #include "core/models/LeastSquares.h"
 #include "core/models/ModelError.h"
 
@@ -48,6 +51,51 @@ double crossValidatedRms(const Eigen::MatrixXd& X, const Eigen::VectorXd& y,
         heldOutSquares += (y(test) - X(test, Eigen::all) * fit.coefficients).squaredNorm();
     }
     return std::sqrt(heldOutSquares / double(folds.size()));
+}
+
+FoldNormalEquations::FoldNormalEquations(const Eigen::MatrixXd& X, const Eigen::VectorXd& y,
+                                         const std::vector<int>& folds)
+    : X_(X), y_(y), folds_(folds) {
+    const int foldCount = folds.empty() ? 0 : *std::max_element(folds.begin(), folds.end()) + 1;
+    for (int f = 0; f < foldCount; ++f) {
+        std::vector<Eigen::Index> rows;
+        for (std::size_t i = 0; i < folds.size(); ++i)
+            if (folds[i] == f) rows.push_back(Eigen::Index(i));
+        heldOutX_.push_back(X(rows, Eigen::all));
+        heldOutY_.push_back(y(rows));
+        gram_.push_back(heldOutX_.back().transpose() * heldOutX_.back());
+        moment_.push_back(heldOutX_.back().transpose() * heldOutY_.back());
+    }
+    totalGram_ = X.transpose() * X;
+    totalMoment_ = X.transpose() * y;
+}
+
+double FoldNormalEquations::crossValidatedRms(const std::vector<Eigen::Index>& columns) const {
+    // Beyond this condition number of the unit-diagonal normal matrix (10⁴ for
+    // the design itself) the normal equations would lose digits a QR keeps.
+    constexpr double kWellConditioned = 1e8;
+    const auto k = Eigen::Index(columns.size());
+    double heldOutSquares = 0;
+    for (std::size_t f = 0; f < gram_.size(); ++f) {
+        const Eigen::Index heldOutRows = heldOutY_[f].size();
+        if (heldOutRows == 0) continue;
+        if (Eigen::Index(folds_.size()) - heldOutRows <= k)
+            return std::numeric_limits<double>::infinity();
+        const Eigen::MatrixXd G = totalGram_(columns, columns) - gram_[f](columns, columns);
+        const Eigen::VectorXd b = totalMoment_(columns) - moment_[f](columns);
+        // Unit diagonal, as solveLeastSquares scales its columns to unit norm.
+        const Eigen::VectorXd scale = G.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+        const Eigen::MatrixXd unit = scale.asDiagonal() * G * scale.asDiagonal();
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(unit, Eigen::EigenvaluesOnly);
+        const Eigen::VectorXd& lambda = eigen.eigenvalues();
+        if (!(lambda.minCoeff() > lambda.maxCoeff() / kWellConditioned))
+            return models::crossValidatedRms(X_(Eigen::all, columns), y_, folds_);
+        const Eigen::VectorXd beta = scale.asDiagonal() * unit.llt().solve(scale.asDiagonal() * b);
+        // The residual itself, not yᵀy − 2βᵀXᵀy + βᵀXᵀXβ: that difference of
+        // large numbers would bury a residual near the noise in rounding.
+        heldOutSquares += (heldOutY_[f] - heldOutX_[f](Eigen::all, columns) * beta).squaredNorm();
+    }
+    return std::sqrt(heldOutSquares / double(folds_.size()));
 }
 
 std::size_t simplestNearBest(const std::vector<double>& scores, double tolerance) {

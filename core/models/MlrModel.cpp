@@ -101,12 +101,20 @@ FitSummary MlrModel::fitRuns(const std::vector<RunData>& training) {
     std::vector<std::vector<int>> bestColumns;
     std::vector<double> scores;
     const int largest = std::min(options_.max_sensors, int(candidates.size()));
+    const Eigen::MatrixXd everySensor = design(C, dx, positionDependent);
+    const FoldNormalEquations normalEquations(everySensor, y, folds);
+    const auto candidateCount = Eigen::Index(candidates.size());
+    std::vector<Eigen::Index> designColumns;  // of a subset, within everySensor
     for (int k = 1; k <= largest; ++k) {
         double bestScore = std::numeric_limits<double>::infinity();
         std::vector<int> best;
         forEachSubset(int(candidates.size()), k, [&](const std::vector<int>& subset) {
-            const double cv =
-                crossValidatedRms(design(C(Eigen::all, subset), dx, positionDependent), y, folds);
+            designColumns.assign(subset.begin(), subset.end());
+            if (positionDependent)
+                for (int j : subset) designColumns.push_back(candidateCount + j);  // position gains
+            else
+                designColumns.push_back(candidateCount);  // the offset
+            const double cv = normalEquations.crossValidatedRms(designColumns);
             if (cv < bestScore) {
                 bestScore = cv;
                 best = subset;

@@ -1,11 +1,15 @@
 // Multiple linear regression with sensor selection: exact recovery of a
 // two-sensor model among distractors, the best single sensor, predictions at
-// any point, drift targets and channels that cannot be used.
+// any point, drift targets and channels that cannot be used; the subset
+// search's cross-validation from normal equations against a QR per fold.
 
 #include <gtest/gtest.h>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <random>
 
+#include "core/models/CrossValidation.h"
 #include "core/models/MlrModel.h"
 #include "core/models/RunDataAccess.h"
 #include "tests/models/ModelTestSupport.h"
@@ -159,6 +163,41 @@ TEST(MlrModel, driftTargetHasAnOffsetAndNoPositionTerm) {
     expectRelative(fit, QStringLiteral("T_spindle.a"), -2.5);
     EXPECT_NEAR(fit.parameters.at(QStringLiteral("c")).value, 0, 1e-9);
     EXPECT_FALSE(fit.parameters.count(QStringLiteral("T_spindle.b")));
+}
+
+}  // namespace
+}  // namespace driftlab::models
+
+namespace driftlab::models {
+namespace {
+
+TEST(CrossValidation, normalEquationsPerFoldScoreEverySubsetAsTheFoldsOwnQrDoes) {
+    // The best-subset search scores subsets from each fold's summed normal
+    // equations; it must give what a QR of the fold's rows gives, and fall back
+    // to that QR where a subset is (nearly) collinear.
+    std::mt19937 rng(7);
+    std::normal_distribution<double> normal;
+    const Eigen::Index n = 600;
+    Eigen::MatrixXd X(n, 6);
+    for (Eigen::Index i = 0; i < n; ++i)
+        for (Eigen::Index j = 0; j < 4; ++j) X(i, j) = 3 * normal(rng) + double(j);
+    X.col(4) = X.col(1) * 2 - X.col(2);  // exactly collinear with columns 1 and 2
+    X.col(5).setOnes();                  // an offset
+    const Eigen::VectorXd y = X.leftCols(2) * Eigen::Vector2d(1.5, -0.7) +
+                              Eigen::VectorXd::NullaryExpr(n, [&] { return normal(rng); });
+    std::vector<int> folds(static_cast<std::size_t>(n));
+    for (std::size_t i = 0; i < folds.size(); ++i) folds[i] = int(3 * i / folds.size());
+    const FoldNormalEquations normal3(X, y, folds);
+    for (const std::vector<Eigen::Index>& columns :
+         std::vector<std::vector<Eigen::Index>>{{0, 5}, {0, 1, 5}, {1, 2, 3, 5}, {3}}) {
+        const double qr = crossValidatedRms(X(Eigen::all, columns), y, folds);
+        EXPECT_NEAR(normal3.crossValidatedRms(columns), qr, 1e-9 * qr);
+        EXPECT_GT(qr, 0.9);  // the noise's RMS is 1
+    }
+    const std::vector<Eigen::Index> collinear{1, 2, 4, 5};
+    EXPECT_EQ(normal3.crossValidatedRms(collinear),
+              crossValidatedRms(X(Eigen::all, collinear), y, folds));
+    EXPECT_EQ(normal3.crossValidatedRms(collinear), std::numeric_limits<double>::infinity());
 }
 
 }  // namespace
