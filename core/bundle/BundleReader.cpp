@@ -79,9 +79,9 @@ void BundleParser::checkPosition(const CsvTable& csv, int column, double positio
         csv.fail(column, QStringLiteral("%1 = %2 mm lies beyond the screw [%3, %4] mm "
                                         "(unit mix-up? positions are in mm)")
                              .arg(csv.header()[std::size_t(column)])
-                             .arg(position_mm)
-                             .arg(m_positionMin_mm)
-                             .arg(m_positionMax_mm));
+                             .arg(numberText(position_mm))
+                             .arg(numberText(m_positionMin_mm))
+                             .arg(numberText(m_positionMax_mm)));
     const auto& travel = m_campaign.travel_mm;
     if (!travel) return;
     const double outside = std::max(travel->from_mm - position_mm, position_mm - travel->to_mm);
@@ -194,8 +194,8 @@ void BundleParser::readSamples() {
         if (t < last.time_s)
             csv.fail(timeCol, QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
                                   .arg(m_campaign.runs[runIndex].id)
-                                  .arg(t)
-                                  .arg(last.time_s));
+                                  .arg(numberText(t))
+                                  .arg(numberText(last.time_s)));
         bool anyValue = false;
         for (std::size_t k = 0; k < dataCols.size(); ++k) {
             const int column = dataCols[k];

@@ -7,6 +7,7 @@
 #include "core/bundle/BundleParser.h"
 #include "core/bundle/SampleRows.h"
 #include "core/bundle/ValueLimits.h"
+#include "core/domain/NumberText.h"
 
 namespace driftlab {
 namespace {
@@ -46,15 +47,15 @@ void BundleParser::readMotion() {
         check(csv, c[5], impossibleAxisValue(kFeedColumn, m.feed_mm_min));
         if (m.end_s < m.start_s)
             csv.fail(c[2], QStringLiteral("segment ends (%1 s) before it starts (%2 s)")
-                               .arg(m.end_s)
-                               .arg(m.start_s));
+                               .arg(numberText(m.end_s))
+                               .arg(numberText(m.start_s)));
         if (!run.motion.empty() && m.start_s < run.motion.back().end_s)
             csv.fail(c[1],
                      QStringLiteral("time goes backwards in run '%1': segment starts at %2 s, "
                                     "before the previous one ends (%3 s)")
                          .arg(run.id)
-                         .arg(m.start_s)
-                         .arg(run.motion.back().end_s));
+                         .arg(numberText(m.start_s))
+                         .arg(numberText(run.motion.back().end_s)));
         checkPosition(csv, c[3], m.from_mm, overrun);
         checkPosition(csv, c[4], m.to_mm, overrun);
         run.motion.push_back(m);
@@ -83,8 +84,8 @@ void BundleParser::readPositioning() {
         if (!run.positioning.empty() && p.time_s < run.positioning.back().time_s)
             csv.fail(c[1], QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
                                .arg(run.id)
-                               .arg(p.time_s)
-                               .arg(run.positioning.back().time_s));
+                               .arg(numberText(p.time_s))
+                               .arg(numberText(run.positioning.back().time_s)));
         p.cycle = csv.integer(c[2]);
         if (p.cycle < 0) csv.fail(c[2], QStringLiteral("cycle must not be negative"));
         p.target_mm = csv.number(c[3]);

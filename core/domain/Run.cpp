@@ -22,9 +22,9 @@ QString toString(RunKind kind) {
 }
 
 std::optional<RunKind> runKindFromString(const QString& text) {
+    // In any case: "ETVE" is how the acronym is written by hand.
     for (RunKind kind : {RunKind::Moving, RunKind::Spindle, RunKind::Etve, RunKind::Positioning})
-        if (toString(kind).compare(text.trimmed(), Qt::CaseInsensitive) == 0)
-            return kind;  // "ETVE"
+        if (toString(kind).compare(text.trimmed(), Qt::CaseInsensitive) == 0) return kind;
     return std::nullopt;
 }
 
