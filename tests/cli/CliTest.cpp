@@ -8,6 +8,7 @@
 
 #include "core/bundle/BundleReader.h"
 #include "tests/cli/CliRunner.h"
+#include "tests/core/BadBundleCases.h"
 #include "tests/core/BundleTestSupport.h"
 
 using namespace driftlab;

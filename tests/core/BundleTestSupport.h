@@ -1,11 +1,11 @@
 #pragma once
 // Shared by the bundle, store and CLI tests: the example bundle, generated
-// campaigns, and the catalogue of bad bundles with the error each must give.
+// campaigns, files read, written and rewritten column by column (the catalogue
+// of bad bundles is in BadBundleCases.h).
 
 #include <QByteArray>
 #include <QString>
 #include <functional>
-#include <ostream>
 #include <vector>
 
 #include "core/domain/Campaign.h"
@@ -31,16 +31,5 @@ QByteArray sha256OfFile(const QString& path);
 /// A moving-state campaign with `rows` sample times of five temperature
 /// channels plus position, feed and torque, deterministic in `seed`.
 Campaign generatedCampaign(std::size_t rows, unsigned seed = 1);
-
-/// A bundle with one defect and where and why the reader must say it is bad.
-struct BadBundleCase {
-    const char* name;
-    std::function<void(const QString& bundleDir)> breakIt;
-    const char* expectedLocation;  ///< e.g. "samples.csv:4:3"
-    const char* expectedMessage;   ///< a part of the message
-};
-void PrintTo(const BadBundleCase& bad, std::ostream* os);
-/// Every bad-input class of the bundle format (issue #2), applied to a copy of the example.
-const std::vector<BadBundleCase>& badBundleCases();
 
 }  // namespace driftlab::test

@@ -4,6 +4,7 @@
 #include <QTemporaryDir>
 
 #include "core/bundle/BundleReader.h"
+#include "tests/core/BadBundleCases.h"
 #include "tests/core/BundleTestSupport.h"
 
 using namespace driftlab;
