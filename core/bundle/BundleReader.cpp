@@ -184,12 +184,12 @@ void BundleParser::readSamples() {
             runIndex = runOf(csv, runCol);
             lastRunId.assign(id);
         }
-        check(csv, timeCol, impossibleClockTime(csv.number(timeCol)));
+        const double raw_s = csv.time(timeCol);
+        check(csv, timeCol, impossibleClockTime(raw_s));
         HeldRow& last = held[runIndex];
         if (!offset_s[runIndex])
-            offset_s[runIndex] =
-                loggerClockOffset_s(m_campaign.runs[runIndex], csv.number(timeCol));
-        const double t = onRunClock(csv.number(timeCol), *offset_s[runIndex]);
+            offset_s[runIndex] = loggerClockOffset_s(m_campaign.runs[runIndex], raw_s);
+        const double t = onRunClock(raw_s, *offset_s[runIndex]);
         check(csv, timeCol, impossibleTime(t));
         if (t < last.time_s)
             csv.fail(timeCol, QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
@@ -280,7 +280,7 @@ void BundleParser::moveOntoRunClocks(const std::vector<std::optional<double>>& o
         moved << QStringLiteral("'%1' at %2 s%3")
                      .arg(m_campaign.runs[r].id, numberText(offset),
                           offset >= 1e9
-                              ? QStringLiteral(" (Unix time: %1)")
+                              ? QStringLiteral(" (the clock read %1)")
                                     .arg(QDateTime::fromSecsSinceEpoch(qint64(offset), Qt::UTC)
                                              .toString(Qt::ISODate))
                               : QString());

@@ -1,6 +1,7 @@
 #include "core/bundle/CsvTable.h"
 
 #include <csv.h>
+#include <QDateTime>
 #include <QHash>
 #include <QIODevice>
 #include <charconv>
@@ -258,6 +259,25 @@ double CsvTable::number(int column) const {
     if (field(column).empty())
         fail(column, QStringLiteral("empty cell in column '%1'").arg(m_header[column]));
     return numberOrMissing(column);
+}
+
+double CsvTable::time(int column) const {
+    const std::string_view cell = field(column);
+    // A date starts with a four-digit year and a '-'; anything else is a number.
+    const bool isDate =
+        cell.size() >= 10 && cell[4] == '-' &&
+        std::all_of(cell.begin(), cell.begin() + 4, [](char c) { return c >= '0' && c <= '9'; });
+    if (!isDate) return number(column);
+    QString text = QString::fromUtf8(cell.data(), qsizetype(cell.size()));
+    if (text.size() > 10 && text[10] == QLatin1Char(' ')) text[10] = QLatin1Char('T');
+    const QDateTime read = QDateTime::fromString(text, Qt::ISODateWithMs);
+    if (!read.isValid())
+        fail(column, QStringLiteral("cell %1 in column '%2' is neither a number nor a date and "
+                                    "time (ISO 8601: 2026-11-18T11:06:40)")
+                         .arg(quoted(cell), m_header[column]));
+    const bool zoned = read.timeSpec() != Qt::LocalTime;
+    const QDateTime utc = zoned ? read.toUTC() : QDateTime(read.date(), read.time(), Qt::UTC);
+    return double(utc.toMSecsSinceEpoch()) / 1000.0;
 }
 
 double CsvTable::numberOrMissing(int column) const {

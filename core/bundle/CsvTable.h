@@ -59,6 +59,11 @@ public:
     /// Like number() but an empty cell is a missing sample (NaN).
     double numberOrMissing(int column) const;
     int integer(int column) const;
+    /// A time in s: a number, or a date and time of day as loggers write them
+    /// (ISO 8601, 'T' or a space between: "2026-11-18 11:06:40.5"), read as
+    /// seconds since 1970. Without a zone it is read as UTC: only differences
+    /// count (a run is counted from its first record), and UTC has no jumps.
+    double time(int column) const;
     QString text(int column) const;
 
     [[noreturn]] void fail(int column, const QString& message) const;

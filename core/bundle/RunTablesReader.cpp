@@ -39,7 +39,7 @@ void BundleParser::readMotion() {
     while (csv.next()) {
         const std::size_t r = runOf(csv, c[0]);
         Run& run = m_campaign.runs[r];
-        MotionSegment m{csv.number(c[1]), csv.number(c[2]), csv.number(c[3]), csv.number(c[4]),
+        MotionSegment m{csv.time(c[1]), csv.time(c[2]), csv.number(c[3]), csv.number(c[4]),
                         csv.number(c[5])};
         check(csv, c[1], impossibleClockTime(m.start_s));
         check(csv, c[2], impossibleClockTime(m.end_s));
@@ -78,7 +78,7 @@ void BundleParser::readPositioning() {
         const std::size_t r = runOf(csv, c[0]);
         Run& run = m_campaign.runs[r];
         PositioningMeasurement p;
-        p.time_s = csv.number(c[1]);
+        p.time_s = csv.time(c[1]);
         check(csv, c[1], impossibleClockTime(p.time_s));
         noteLatest(m_latestPositioning, r, csv, c[1], p.time_s);
         if (!run.positioning.empty() && p.time_s < run.positioning.back().time_s)

@@ -144,7 +144,23 @@ for name, columns in (('samples', ['time_s']), ('positioning', ['time_s']),
     expectRewrittenImportsAsThePlainBundle(
         unix, toUnixTime.constData(),
         "warning: run(s) starting late in every file, as on a logger's clock: 'S1' at "
-        "1795000000 s (Unix time: 2026-11-18T11:06:40Z); counted from their first record");
+        "1795000000 s (the clock read 2026-11-18T11:06:40Z); counted from their first record");
+
+    // And on one that writes the date and time of day, as many loggers do.
+    const QString dated = dir.filePath(QStringLiteral("dated"));
+    copyBundle(exampleBundlePath(), dated);
+    const QByteArray toDateTime = QByteArray(script)
+                                      .replace("import csv, sys", "import csv, sys, datetime")
+                                      .replace("'%.3f' % (float(row[i]) + 5000)",
+                                               "(datetime.datetime(2026, 11, 18, 11, 6, 40) + "
+                                               "datetime.timedelta(seconds=float(row[i])))"
+                                               ".isoformat(' ', 'milliseconds')");
+    expectRewrittenImportsAsThePlainBundle(
+        dated, toDateTime.constData(),
+        "warning: run(s) starting late in every file, as on a logger's clock: 'S1' at "
+        "1795000000 s (the clock read 2026-11-18T11:06:40Z)");
+    EXPECT_TRUE(readFile(QDir(dated).filePath(QStringLiteral("positioning.csv")))
+                    .contains("\nS1,2026-11-18 11:06:40.000,0,0,+,"));
 
     // Only the thermometers late, the motion from 0 s: a logger that started
     // late. Its times are kept, and the models name the hole.

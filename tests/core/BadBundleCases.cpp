@@ -226,6 +226,12 @@ const std::vector<BadBundleCase>& badBundleCases() {
              replaceInFile(file(d, "samples.csv"), "\nS1,10,", "\nS1,36000000,");
          },
          "samples.csv:3:2", "ms instead of s?"},
+        {"time_as_an_impossible_date",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,10,", "\nS1,2026-13-45 25:00:00,");
+         },
+         "samples.csv:3:2",
+         "cell '2026-13-45 25:00:00' in column 'time_s' is neither a number nor a date and time"},
         {"time_on_a_unix_clock",
          [=](const QString& d) {
              replaceInFile(file(d, "samples.csv"), "\nS1,10,", "\nS1,1795000010,");
