@@ -23,11 +23,11 @@ inline const QString kPositioning = QStringLiteral("positioning.csv");
 
 namespace driftlab {
 
-/// The latest time of a run in motion.csv or positioning.csv and where it
-/// stands: checked on the run's clock once samples.csv has set that clock.
-struct LatestRecord {
-    double time_s = -std::numeric_limits<double>::infinity();
-    int line = 0;
+/// Where a run's last record in motion.csv or positioning.csv stands (times
+/// increase within a run, so it holds the run's latest time): that time is
+/// checked on the run's clock once samples.csv has set that clock.
+struct LastRecord {
+    int line = 0;  ///< 0: the run has no record in the file
     int column = 0;
 };
 
@@ -62,8 +62,6 @@ private:
     void moveOntoRunClocks(const std::vector<std::optional<double>>& offset_s);
     void warnNothingLogged(const std::vector<std::optional<double>>& firstRowSeen);
     void checkRunClockTimes(const std::vector<std::optional<double>>& offset_s) const;
-    void noteLatest(std::vector<LatestRecord>& latest, std::size_t run, const CsvTable& csv,
-                    int column, double time_s);
     void readMotion();
     void readPositioning();
     void countCyclesFromZero();
@@ -72,7 +70,7 @@ private:
     const BundleReadOptions& m_options;
     Campaign m_campaign;
     QHash<QString, int> m_runIndex;
-    std::vector<LatestRecord> m_latestMotion, m_latestPositioning;  // per run
+    std::vector<LastRecord> m_lastMotion, m_lastPositioning;  // per run
     double m_positionMin_mm = -std::numeric_limits<double>::infinity();
     double m_positionMax_mm = std::numeric_limits<double>::infinity();
 };

@@ -11,7 +11,7 @@
 #include "core/bundle/CampaignJson.h"
 #include "core/bundle/SampleRows.h"
 #include "core/bundle/ValueLimits.h"
-#include "core/domain/NumberText.h"
+#include "core/domain/MessageText.h"
 
 namespace driftlab {
 
@@ -28,6 +28,8 @@ Campaign BundleParser::parse() {
     for (std::size_t i = 0; i < m_campaign.runs.size(); ++i)
         m_runIndex.insert(m_campaign.runs[i].id, int(i));
     setPositionLimits();
+    m_lastMotion.assign(m_campaign.runs.size(), {});
+    m_lastPositioning.assign(m_campaign.runs.size(), {});
 
     // Motion and positioning first (RunTablesReader.cpp): a run's first sample row then knows
     // whether every file of the run starts on a logger's clock.
@@ -247,25 +249,21 @@ void BundleParser::readSamples() {
 /// What campaign.json declares and no file fills: a channel without a column
 /// (a writer that dropped or renamed it), a run without any record.
 void BundleParser::warnNothingLogged(const std::vector<std::optional<double>>& firstRowSeen) {
-    const auto quoted = [](const QString& id) {
-        return QLatin1Char('\'') + id + QLatin1Char('\'');
-    };
     QStringList channels, runs;
     for (const Channel& channel : m_campaign.channels)
         if (std::find(m_campaign.sample_columns.begin(), m_campaign.sample_columns.end(),
                       channel.id) == m_campaign.sample_columns.end())
-            channels << quoted(channel.id);
+            channels << channel.id;
     for (std::size_t r = 0; r < m_campaign.runs.size(); ++r) {
         const Run& run = m_campaign.runs[r];
-        if (!firstRowSeen[r] && run.positioning.empty() && run.motion.empty())
-            runs << quoted(run.id);
+        if (!firstRowSeen[r] && run.positioning.empty() && run.motion.empty()) runs << run.id;
     }
     if (!channels.isEmpty())
         warnings << QStringLiteral("%1: no column for channel(s) %2 of %3: they carry no reading")
-                        .arg(kSamples, channels.join(QStringLiteral(", ")), kCampaign);
+                        .arg(kSamples, quotedList(channels), kCampaign);
     if (!runs.isEmpty())
         warnings << QStringLiteral("run(s) %1 of %2 have no record in any file: no data")
-                        .arg(runs.join(QStringLiteral(", ")), kCampaign);
+                        .arg(quotedList(runs), kCampaign);
 }
 
 /// Runs logged on a logger's clock are counted from their first record,

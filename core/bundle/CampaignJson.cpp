@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "core/bundle/BundleError.h"
+#include "core/domain/MessageText.h"
 
 namespace driftlab {
 namespace {
@@ -115,11 +116,10 @@ ObjectReader elementReader(const QJsonArray& array, int i, const QString& name,
 void requirePlausible(const ObjectReader& r, const char* key, double value, double low, double high,
                       const char* unit, const char* part) {
     if (value < low || value > high)
-        r.fail(QLatin1String(key), QStringLiteral("%1 %2 is no %3 (%4…%5 %2): another unit?")
-                                       .arg(value)
-                                       .arg(QString::fromUtf8(unit), QString::fromUtf8(part))
-                                       .arg(low)
-                                       .arg(high));
+        r.fail(QLatin1String(key),
+               QStringLiteral("%1 %2 is no %3 (%4…%5 %2): another unit?")
+                   .arg(numberText(value), QString::fromUtf8(unit), QString::fromUtf8(part),
+                        numberText(low), numberText(high)));
 }
 
 Screw readScrew(ObjectReader r) {

@@ -7,7 +7,7 @@
 #include "core/bundle/BundleParser.h"
 #include "core/bundle/SampleRows.h"
 #include "core/bundle/ValueLimits.h"
-#include "core/domain/NumberText.h"
+#include "core/domain/MessageText.h"
 
 namespace driftlab {
 namespace {
@@ -43,7 +43,6 @@ void BundleParser::readMotion() {
                         csv.number(c[5])};
         check(csv, c[1], impossibleClockTime(m.start_s));
         check(csv, c[2], impossibleClockTime(m.end_s));
-        noteLatest(m_latestMotion, r, csv, c[2], m.end_s);
         check(csv, c[5], impossibleAxisValue(kFeedColumn, m.feed_mm_min));
         if (m.end_s < m.start_s)
             csv.fail(c[2], QStringLiteral("segment ends (%1 s) before it starts (%2 s)")
@@ -59,6 +58,7 @@ void BundleParser::readMotion() {
         checkPosition(csv, c[3], m.from_mm, overrun);
         checkPosition(csv, c[4], m.to_mm, overrun);
         run.motion.push_back(m);
+        m_lastMotion[r] = {csv.line(), c[2] + 1};
     }
     warnOverrun(kMotion, overrun);
     reportProgress(csv, 0.0, 0.1);
@@ -80,7 +80,6 @@ void BundleParser::readPositioning() {
         PositioningMeasurement p;
         p.time_s = csv.time(c[1]);
         check(csv, c[1], impossibleClockTime(p.time_s));
-        noteLatest(m_latestPositioning, r, csv, c[1], p.time_s);
         if (!run.positioning.empty() && p.time_s < run.positioning.back().time_s)
             csv.fail(c[1], QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
                                .arg(run.id)
@@ -97,13 +96,15 @@ void BundleParser::readPositioning() {
                                           "↑ ↓, up down, pos neg, +1 -1)")
                                .arg(direction));
         p.direction = *d;
-        if (isOtherDirectionSpelling(direction) && !otherSpellings.contains(direction)) {
+        if (direction != QLatin1String("+") && direction != QLatin1String("-") &&
+            !otherSpellings.contains(direction)) {
             if (otherSpellings.isEmpty()) otherSpellingLine = csv.line();
             otherSpellings << direction;
         }
         p.deviation_um = csv.number(c[5]);
         check(csv, c[5], impossibleDeviation(p.deviation_um));
         run.positioning.push_back(p);
+        m_lastPositioning[r] = {csv.line(), c[1] + 1};
     }
     warnOverrun(kPositioning, overrun);
     if (!otherSpellings.isEmpty())
@@ -112,8 +113,7 @@ void BundleParser::readPositioning() {
                         "- (negative, ↓)")
                         .arg(kPositioning)
                         .arg(otherSpellingLine)
-                        .arg(QLatin1Char('\'') + otherSpellings.join(QStringLiteral("', '")) +
-                             QLatin1Char('\''));
+                        .arg(quotedList(otherSpellings));
     for (const Run& run : m_campaign.runs) {
         double largest_um = 0;
         for (const PositioningMeasurement& p : run.positioning)
@@ -125,28 +125,24 @@ void BundleParser::readPositioning() {
     reportProgress(csv, 0.1, 0.1);
 }
 
-void BundleParser::noteLatest(std::vector<LatestRecord>& latest, std::size_t run,
-                              const CsvTable& csv, int column, double time_s) {
-    latest.resize(m_campaign.runs.size());
-    if (time_s >= latest[run].time_s) latest[run] = {time_s, csv.line(), column + 1};
-}
-
 /// Motion and positioning times may be on a logger's clock until samples.csv
 /// has set each run's clock (loggerClockOffset_s); on it, each must be a time
 /// since the run's start. A run whose samples start at 0 s keeps its Unix
 /// times in positioning.csv, and they are refused where they stand.
 void BundleParser::checkRunClockTimes(const std::vector<std::optional<double>>& offset_s) const {
-    const std::pair<const QString&, const std::vector<LatestRecord>&> files[] = {
-        {kMotion, m_latestMotion}, {kPositioning, m_latestPositioning}};
-    for (const auto& [file, latest] : files)
-        for (std::size_t r = 0; r < latest.size(); ++r) {
-            if (!latest[r].line) continue;
-            const double t = onRunClock(latest[r].time_s, offset_s[r].value_or(0.0));
-            if (const auto why = impossibleTime(t))
-                throw BundleException(
-                    {file, latest[r].line, latest[r].column,
-                     QStringLiteral("run '%1': %2").arg(m_campaign.runs[r].id, *why)});
-        }
+    const auto check = [&](const QString& file, const LastRecord& last, std::size_t r,
+                           double time_s) {
+        if (const auto why = impossibleTime(onRunClock(time_s, offset_s[r].value_or(0.0))))
+            throw BundleException(
+                {file, last.line, last.column,
+                 QStringLiteral("run '%1': %2").arg(m_campaign.runs[r].id, *why)});
+    };
+    for (std::size_t r = 0; r < m_campaign.runs.size(); ++r) {
+        const Run& run = m_campaign.runs[r];
+        if (!run.motion.empty()) check(kMotion, m_lastMotion[r], r, run.motion.back().end_s);
+        if (!run.positioning.empty())
+            check(kPositioning, m_lastPositioning[r], r, run.positioning.back().time_s);
+    }
 }
 
 /// Interferometer software often counts measurement cycles from 1. When no
@@ -159,7 +155,7 @@ void BundleParser::countCyclesFromZero() {
     for (const Run& run : m_campaign.runs) {
         if (run.kind != RunKind::Moving || run.positioning.empty()) continue;
         if (!firstPassIsCycleOneAtTheStart(run)) return;
-        runs << QLatin1Char('\'') + run.id + QLatin1Char('\'');
+        runs << run.id;
     }
     if (runs.isEmpty()) return;
     for (Run& run : m_campaign.runs)
@@ -169,7 +165,7 @@ void BundleParser::countCyclesFromZero() {
                     "%1: the cycles of run(s) %2 are counted from 1, with no cycle 0: "
                     "their first pass, cycle 1, is read as the cold reference (cycle 0) "
                     "and every cycle is counted one lower")
-                    .arg(kPositioning, runs.join(QStringLiteral(", ")));
+                    .arg(kPositioning, quotedList(runs));
 }
 
 }  // namespace driftlab

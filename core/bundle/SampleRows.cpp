@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/bundle/ValueLimits.h"
+#include "core/domain/MessageText.h"
 
 namespace driftlab {
 
@@ -18,10 +19,8 @@ void mergeInto(HeldRow& held, const std::vector<double>& row, const CsvTable& cs
                      QStringLiteral("column '%1' reads %2 at %3 s of run '%4', but %5 on line %6 "
                                     "at the same time: one instant cannot have two readings")
                          .arg(csv.header()[std::size_t(columns[k])])
-                         .arg(row[k])
-                         .arg(held.time_s)
-                         .arg(run)
-                         .arg(held.values[k])
+                         .arg(numberText(row[k]), numberText(held.time_s), run,
+                              numberText(held.values[k]))
                          .arg(held.line));
         }
     }

@@ -4,7 +4,7 @@
 #include <QStringList>
 #include <cmath>
 
-#include "core/domain/NumberText.h"
+#include "core/domain/MessageText.h"
 
 namespace driftlab {
 namespace {

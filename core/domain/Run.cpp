@@ -44,11 +44,6 @@ std::optional<Direction> directionFromText(const QString& text) {
     return std::nullopt;
 }
 
-bool isOtherDirectionSpelling(const QString& text) {
-    const QString t = text.trimmed();
-    return t != QLatin1String("+") && t != QLatin1String("-") && directionFromText(t);
-}
-
 bool isFeedAxisRun(RunKind kind) {
     return kind == RunKind::Moving || kind == RunKind::Positioning;
 }

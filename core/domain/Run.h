@@ -43,8 +43,6 @@ enum class Direction { Positive, Negative };
 /// pos/neg, positive/negative in any case, +1/-1, a typographic minus.
 /// Surrounding blanks are allowed; nullopt for anything else.
 std::optional<Direction> directionFromText(const QString& text);
-/// Whether `text` is one of the other spellings directionFromText reads.
-bool isOtherDirectionSpelling(const QString& text);
 
 /// One interferometer reading. deviation_um = actual - target (ISO 230-2 sign).
 struct PositioningMeasurement {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/domain/NumberText.h"
+#include "core/domain/MessageText.h"
 
 namespace driftlab {
 namespace {

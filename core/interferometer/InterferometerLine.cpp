@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/bundle/ValueLimits.h"
-#include "core/domain/NumberText.h"
+#include "core/domain/MessageText.h"
 
 namespace driftlab {
 namespace {

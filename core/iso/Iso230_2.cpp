@@ -4,7 +4,7 @@
 #include <map>
 #include <set>
 
-#include "core/domain/NumberText.h"
+#include "core/domain/MessageText.h"
 
 namespace driftlab::iso {
 

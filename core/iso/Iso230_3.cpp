@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "core/domain/NumberText.h"
+#include "core/domain/MessageText.h"
 
 namespace driftlab::iso {
 

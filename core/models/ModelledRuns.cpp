@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/domain/MessageText.h"
+
 namespace driftlab::models {
 namespace {
 
@@ -32,12 +34,12 @@ QString whyNoModelledRun(const Campaign& campaign, const QString& targetChannel)
     QStringList warm;
     for (const Run& run : campaign.runs)
         if (isFeedAxisRun(run.kind) && !run.positioning.empty() && !hasColdReference(run))
-            warm << QLatin1Char('\'') + run.id + QLatin1Char('\'');
+            warm << run.id;
     if (warm.isEmpty()) return QStringLiteral("no feed-axis run has positioning readings to model");
     return QStringLiteral(
                "run(s) %1 have positioning readings but no cycle 0 (the cold "
                "reference): a thermal error is the drift from it")
-        .arg(warm.join(QStringLiteral(", ")));
+        .arg(quotedList(warm));
 }
 
 QStringList driftTargets(const Campaign& campaign) {

@@ -6,7 +6,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "core/domain/NumberText.h"
+#include "core/domain/MessageText.h"
 
 namespace driftlab::procedures {
 namespace {
