@@ -170,15 +170,24 @@ std::vector<ErrorObservation> positioningErrors(const Run& run) {
     return observations;
 }
 
-std::vector<ErrorObservation> driftErrors(const Run& run, const QString& channel) {
+std::vector<ErrorObservation> driftErrors(const Run& run, const QString& channel,
+                                          double referenceWindow_s) {
     const Signal s = presentSamples(run, channel);
     if (s.time_s.size() < 2)
         throw ModelError(QStringLiteral("run '%1' has no samples of the target channel '%2'")
                              .arg(run.id, channel));
+    // The drift's zero is the median of the first window, as a temperature
+    // rise's is: a single first reading carries the probe's whole noise into
+    // every later error of the run, as an offset no model can predict.
+    std::vector<double> window;
+    for (std::size_t i = 0;
+         i < s.time_s.size() && s.time_s[i] <= s.time_s.front() + referenceWindow_s; ++i)
+        window.push_back(s.value[i]);
+    const double reference_um = median(window);
     std::vector<ErrorObservation> observations;
-    for (std::size_t i = 1; i < s.time_s.size(); ++i)
+    for (std::size_t i = 0; i < s.time_s.size(); ++i)
         observations.push_back(
-            {s.time_s[i], 0.0, Direction::Positive, -1, s.value[i] - s.value.front()});
+            {s.time_s[i], 0.0, Direction::Positive, -1, s.value[i] - reference_um});
     return observations;
 }
 
@@ -222,7 +231,7 @@ RunData runData(const Campaign& campaign, const Run& run, const DatasetOptions& 
                                  .arg(run.id));
         data.observations = positioningErrors(run);
     } else {
-        data.observations = driftErrors(run, options.target_channel);
+        data.observations = driftErrors(run, options.target_channel, options.reference_window_s);
     }
     data.screw = campaign.screw;
     data.nut_length_mm = campaign.nut_length_mm;

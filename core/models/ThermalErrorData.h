@@ -31,8 +31,8 @@ struct DatasetOptions {
 /// One thermal error observation.
 /// Positioning target: error_um = deviation_um − deviation_um of cycle 0 at the
 /// same target and direction, which removes the cold geometric error and the
-/// backlash. Drift target: the channel's sample minus its first sample, with
-/// position_mm 0 and cycle −1.
+/// backlash. Drift target: the channel's sample minus the median of its samples
+/// in the first reference_window_s, with position_mm 0 and cycle −1.
 struct ErrorObservation {
     double time_s = 0;
     double position_mm = 0;

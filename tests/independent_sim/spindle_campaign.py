@@ -10,7 +10,8 @@ node, some on a surface between a node and the room, some between two nodes;
 none on the shaft or the column core, so the drift lags every sensor. Five
 probes; temperatures logged every 10 s, probes every 5 s (the temperature
 cells of the rows in between are empty, as a logger merging two devices
-writes them). Usage: spindle_campaign.py --out DIR [--seeds 1,2].
+writes them). Beside each bundle, truth_drift.csv holds the probes' drift
+before their noise. Usage: spindle_campaign.py --out DIR [--seeds 1,2].
 """
 import argparse
 import json
@@ -169,7 +170,7 @@ def write(outdir, seed):
     channels.append({"id": "n_spindle", "quantity": "speed", "role": "spindle", "location": "spindle drive"})
     channels += [{"id": p[0], "quantity": "displacement", "role": p[1], "location": "test mandrel probe"}
                  for p in PROBES]
-    runs, rows = [], []
+    runs, rows, truth = [], [], []
     for r, blocks in enumerate(programmes(rng)):
         run_id = f"P{r + 1}"
         runs.append({"id": run_id, "kind": "spindle",
@@ -181,8 +182,10 @@ def write(outdir, seed):
             true = rooms * (1 - sum(weights.values())) + sum(w * temps[:, IDX[n]] for n, w in weights.items())
             read = lag(true, 30.0, 5.0) + rng.normal(0, 0.02, len(ts))
             readings.append(np.round(read, 2))
-        drifts = [np.round(sum(w * rise[:, IDX[n]] for n, w in weights.items()) + rng.normal(0, 0.15, len(ts)), 2)
-                  for _, _, weights in PROBES]
+        true_drifts = [sum(w * rise[:, IDX[n]] for n, w in weights.items()) for _, _, weights in PROBES]
+        drifts = [np.round(d + rng.normal(0, 0.15, len(ts)), 2) for d in true_drifts]
+        truth += [",".join([run_id, f"{t:.1f}"] + [f"{d[i]:.5f}" for d in true_drifts])
+                  for i, t in enumerate(ts)]
         for i, t in enumerate(ts):
             logged = i % 2 == 0  # the thermometers every 10 s, the probes every 5 s
             row = [run_id, f"{t:.1f}"] + [f"{v[i]:.2f}" if logged else "" for v in readings]
@@ -196,6 +199,11 @@ def write(outdir, seed):
     with open(os.path.join(outdir, "samples.csv"), "w") as f:
         f.write(",".join(["run", "time_s"] + [c["id"] for c in channels]) + "\n")
         f.write("\n".join(rows) + "\n")
+    # Not part of the bundle: the probes' drift before their noise, from each
+    # run's start (µm), for the tests to know what a perfect model would score.
+    with open(os.path.join(outdir, "truth_drift.csv"), "w") as f:
+        f.write(",".join(["run", "time_s"] + [p[0] for p in PROBES]) + "\n")
+        f.write("\n".join(truth) + "\n")
 
 
 def main():

@@ -127,10 +127,10 @@ TEST(AutoModel, aSingleTrainingRunIsSplitInTimeAndTheChoiceIsSaid) {
 }
 
 TEST(AutoModel, familiesEquallyGoodOnTheTrainingRunsArePredictedWithTheirMean) {
-    // Seed 1's tilt about x: arx and exponential score within one standard
+    // Seed 5's tilt about x: arx and exponential score within one standard
     // error of each other over the three training runs.
     rig::RigSpec spec;
-    spec.seed = 1;
+    spec.seed = 5;
     spec.runs.clear();
     spec.spindle_runs = 4;
     const Campaign c = rig::simulateCampaign(spec);
@@ -169,7 +169,7 @@ TEST(AutoModel, familiesEquallyGoodOnTheTrainingRunsArePredictedWithTheirMean) {
 TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleRuns) {
     // Six spindle campaigns of the rig (seeds 1–6), three runs to train and
     // three to score, five probes each: 30 chances for the baselines.
-    test::printAutoAgainstBaselinesHeader();
+    test::printAutoAgainstBaselinesHeader("rig's law");
     test::AutoAgainstBaselinesTally tally;
     for (unsigned seed = 1; seed <= 6; ++seed) {
         rig::RigSpec spec;
@@ -185,12 +185,21 @@ TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleR
             const std::vector<RunData> test =
                 test::driftDataset(c, testRuns, QString::fromLatin1(target));
             const test::AutoAgainstBaselines a = test::autoAgainstBaselines(
-                train, test, QStringLiteral("seed %1 %2").arg(seed).arg(QLatin1String(target)));
+                train, test, QStringLiteral("seed %1 %2").arg(seed).arg(QLatin1String(target)),
+                test::rigDriftLawHeldOut(train, test));
             ASSERT_TRUE(a.score.ok());
             const double baseline = a.baselines.better_um();
             tally.add(a);
-            // Never worse than the baselines by more than the probes' noise (0.1 µm) …
-            EXPECT_LT(a.score.rms_um, baseline + 0.1);
+            // Wherever beating both baselines is possible on these runs (the
+            // rig's own drift law, fitted on the same runs, beats them beyond
+            // chance), `auto` beats both …
+            if (a.referenceSurelyBeatsBoth()) {
+                EXPECT_LT(a.score.rms_um, baseline);
+            }
+            // … elsewhere the drift is within the measurement's noise, where
+            // the law itself loses to a baseline as often as not: `auto` ties
+            // (within a fifth of the probes' 0.1 µm) …
+            EXPECT_LT(a.score.rms_um, baseline + 0.02);
             // … and where the drift lags (the shaft and the column core carry no
             // sensor), far better, with a model that has memory: the static fits
             // show hysteresis.
@@ -205,12 +214,11 @@ TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleR
             }
         }
     }
-    // On the small x and tilt drifts, a few tenths of a µm against the probes'
-    // 0.1 µm, cross-validation over three training runs cannot rank close
-    // models: `auto` must beat both baselines on two cases in three, not on
-    // every one (a baseline is better beyond chance on 3 of 30, docs/models.md).
-    tally.print();
-    EXPECT_GE(3 * tally.beaten, 2 * tally.cases);
+    // The law beats both baselines on every probe but the weakest (the tilt
+    // about y, under 1 µm against the probes' 0.1 µm noise).
+    tally.print("rig's own drift law");
+    EXPECT_GE(tally.reference_beats, 24);
+    EXPECT_EQ(tally.beaten_where_reference_beats, tally.reference_beats);
 }
 
 }  // namespace

@@ -78,15 +78,18 @@ TEST(ThermalErrorData, keepsAxisSignalsAndMotion) {
     EXPECT_EQ(data.runs.front().motion.size(), 1u);
 }
 
-TEST(ThermalErrorData, driftTargetIsTheChannelMinusItsFirstSample) {
+TEST(ThermalErrorData, driftTargetIsTheChannelMinusTheMedianOfItsFirstMinute) {
     Campaign c = feedAxisCampaign({{QStringLiteral("T_spindle"), ChannelRole::Spindle}});
     c.channels.push_back(
         {QStringLiteral("D_x"), Quantity::Displacement, ChannelRole::DriftX, {}, {}, {}});
     c.sample_columns.push_back(QStringLiteral("D_x"));
-    driftlab::Run run = sampledRun(c, QStringLiteral("SP1"), 600, 60,
+    driftlab::Run run = sampledRun(c, QStringLiteral("SP1"), 600, 10,
                                    {{QStringLiteral("T_spindle"), [](double) { return 21.0; }},
                                     {QStringLiteral("D_x"), [](double t) { return 3 + t / 60; }}});
     run.kind = RunKind::Spindle;
+    // The probe's noise on its first reading: the zero of every later error
+    // of the run if that reading alone were the zero.
+    run.samples.values[std::size_t(run.samples.columnIndex(QStringLiteral("D_x")))][0] = 3.4;
     c.runs.push_back(run);
 
     EXPECT_TRUE(errorOf(c, {QStringLiteral("SP1")})
@@ -99,10 +102,18 @@ TEST(ThermalErrorData, driftTargetIsTheChannelMinusItsFirstSample) {
     ASSERT_TRUE(data.ok()) << qPrintable(data.error);
     const RunData& sp1 = data.runs.front();
     EXPECT_FALSE(sp1.positionDependent());
-    ASSERT_EQ(sp1.observations.size(), 10u);
-    EXPECT_DOUBLE_EQ(sp1.observations.front().time_s, 60);
-    EXPECT_DOUBLE_EQ(sp1.observations.front().error_um, 1);
-    EXPECT_DOUBLE_EQ(sp1.observations.back().error_um, 10);
+    ASSERT_EQ(sp1.observations.size(), 61u);  // every sample, 0 … 600 s
+    // 0–60 s read 3.4, then 3 + t/60 from 10 s: their median is the 30 s reading, 3.5.
+    EXPECT_DOUBLE_EQ(sp1.observations.front().time_s, 0);
+    EXPECT_NEAR(sp1.observations.front().error_um, -0.1, 1e-12);
+    EXPECT_NEAR(sp1.observations[6].error_um, 0.5, 1e-12);  // at 60 s
+    EXPECT_NEAR(sp1.observations.back().error_um, 9.5, 1e-12);
+
+    // The window is the dataset's reference window, as for a temperature rise.
+    options.reference_window_s = 0;
+    const DatasetResult firstOnly = buildDataset(c, {QStringLiteral("SP1")}, options);
+    ASSERT_TRUE(firstOnly.ok()) << qPrintable(firstOnly.error);
+    EXPECT_NEAR(firstOnly.runs.front().observations.back().error_um, 13 - 3.4, 1e-12);
 }
 
 TEST(ThermalErrorData, runWithoutPositioningDataIsAnError) {
