@@ -204,6 +204,7 @@ Campaign simulateCampaign(const RigSpec& spec, const SimulationCallbacks& callba
     for (int k = 1; k <= spec.spindle_runs; ++k) {
         SpindleTestSpec spindle = spindleTestProgramme(k);
         spindle.seed = static_cast<unsigned>(rng());
+        spindle.probe_noise_um = spec.probe_noise_um;
         campaign.runs.push_back(simulateSpindleTest(spindle, campaign.sample_columns));
     }
     if (callbacks.progress) callbacks.progress(1.0);

@@ -82,6 +82,7 @@ struct RigSpec {
     /// ISO 230-3 spindle runs after the moving states: SP1 … SP<n>, each its own
     /// speed programme (spindleTestProgramme).
     int spindle_runs = 0;
+    double probe_noise_um = 0.1;  ///< the spindle runs' drift probes (1 σ)
     RigEffects effects;
     RigChannelNames names;
     AxisDriveSpec drive;

@@ -99,7 +99,7 @@ Run simulateSpindleTest(const SpindleTestSpec& spec, const std::vector<QString>&
     run.samples.values.assign(sampleColumns.size(), {});
 
     std::mt19937_64 rng(spec.seed);
-    std::normal_distribution<double> probeNoise(0.0, 0.1);
+    std::normal_distribution<double> standardNormal;
     const double nan = std::numeric_limits<double>::quiet_NaN();
 
     // What each sample column carries; the sensors in the order of `ids`.
@@ -125,7 +125,7 @@ Run simulateSpindleTest(const SpindleTestSpec& spec, const std::vector<QString>&
 
     // Probes resolve 1 nm.
     auto probe = [&](double drift_um) {
-        return std::round((drift_um + probeNoise(rng)) * 1000) / 1000;
+        return std::round((drift_um + spec.probe_noise_um * standardNormal(rng)) * 1000) / 1000;
     };
     auto ambientAt = [&](double time_s) {
         return spec.ambient_C + spec.ambient_swing_K *

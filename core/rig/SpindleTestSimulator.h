@@ -30,6 +30,9 @@ struct SpindleTestSpec {
     double ambient_period_s = 12 * 3600;
     /// Spindle for a speed programme, Etve for a machine at rest in a varying room.
     RunKind kind = RunKind::Spindle;
+    /// Each probe reading's noise (1 σ). 0 gives the drift itself, with the
+    /// same thermometer readings: what a perfect model would predict.
+    double probe_noise_um = 0.1;
     unsigned seed = 1;
 };
 

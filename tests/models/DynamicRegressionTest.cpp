@@ -7,6 +7,7 @@
 #include <QtGlobal>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/models/AutoModel.h"
 #include "core/models/DynamicRegressionModel.h"
@@ -166,45 +167,58 @@ TEST(AutoModel, familiesEquallyGoodOnTheTrainingRunsArePredictedWithTheirMean) {
 
 // ---- auto against the least-squares baselines on the rig's spindle runs ----
 
+/// Per run, the drift before the probe's noise at each observation, from
+/// the noise-free twin of the campaign (same thermometer readings).
+std::vector<std::vector<double>> noiseFreeDrift(const std::vector<RunData>& twin) {
+    std::vector<std::vector<double>> truth;
+    for (const RunData& run : twin) {
+        truth.emplace_back();
+        for (const ErrorObservation& o : run.observations) truth.back().push_back(o.error_um);
+    }
+    return truth;
+}
+
 TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleRuns) {
     // Six spindle campaigns of the rig (seeds 1–6), three runs to train and
     // three to score, five probes each: 30 chances for the baselines.
-    test::printAutoAgainstBaselinesHeader("rig's law");
+    test::printAutoAgainstBaselinesHeader();
     test::AutoAgainstBaselinesTally tally;
+    int withRoom = 0;
     for (unsigned seed = 1; seed <= 6; ++seed) {
         rig::RigSpec spec;
         spec.seed = seed;
         spec.runs.clear();
         spec.spindle_runs = 6;
         const Campaign c = rig::simulateCampaign(spec);
+        spec.probe_noise_um = 0;
+        const Campaign noiseFree = rig::simulateCampaign(spec);
         const QStringList trainRuns{"SP1", "SP2", "SP3"}, testRuns{"SP4", "SP5", "SP6"};
         for (const char* target : {"D_x", "D_y", "D_z", "D_a", "D_b"}) {
             SCOPED_TRACE(std::string(target) + " seed " + std::to_string(seed));
-            const std::vector<RunData> train =
-                test::driftDataset(c, trainRuns, QString::fromLatin1(target));
-            const std::vector<RunData> test =
-                test::driftDataset(c, testRuns, QString::fromLatin1(target));
+            const QString probe = QString::fromLatin1(target);
+            const std::vector<RunData> train = test::driftDataset(c, trainRuns, probe);
+            const std::vector<RunData> test = test::driftDataset(c, testRuns, probe);
             const test::AutoAgainstBaselines a = test::autoAgainstBaselines(
-                train, test, QStringLiteral("seed %1 %2").arg(seed).arg(QLatin1String(target)),
-                test::rigDriftLawHeldOut(train, test));
+                train, test, QStringLiteral("seed %1 %2").arg(seed).arg(probe),
+                test::perfectModelHeldOut(
+                    test, noiseFreeDrift(test::driftDataset(noiseFree, testRuns, probe))));
             ASSERT_TRUE(a.score.ok());
             const double baseline = a.baselines.better_um();
             tally.add(a);
-            // Wherever beating both baselines is possible on these runs (the
-            // rig's own drift law, fitted on the same runs, beats them beyond
-            // chance), `auto` beats both …
-            if (a.referenceSurelyBeatsBoth()) {
+            // Wherever the baselines leave room (more than a fifth of the
+            // probes' 0.1 µm noise above a perfect model), `auto` beats both …
+            if (baseline > a.perfect.rms_um + 0.02) {
+                ++withRoom;
                 EXPECT_LT(a.score.rms_um, baseline);
             }
-            // … elsewhere the drift is within the measurement's noise, where
-            // the law itself loses to a baseline as often as not: `auto` ties
-            // (within a fifth of the probes' 0.1 µm) …
+            // … elsewhere (the tilt about y, under 1 µm) it ties within that
+            // fifth, and it stays within the probes' noise of a perfect model …
             EXPECT_LT(a.score.rms_um, baseline + 0.02);
+            EXPECT_LT(a.score.rms_um, a.perfect.rms_um + 0.1);
             // … and where the drift lags (the shaft and the column core carry no
-            // sensor), far better, with a model that has memory: the static fits
-            // show hysteresis.
-            if (QLatin1String(target) == QLatin1String("D_z") ||
-                QLatin1String(target) == QLatin1String("D_y")) {
+            // sensor), far better than the baselines, with a model that has
+            // memory: the static fits show hysteresis.
+            if (probe == QLatin1String("D_z") || probe == QLatin1String("D_y")) {
                 for (const QString& family : a.chosen.split(QStringLiteral(" + ")))
                     EXPECT_TRUE(family == QStringLiteral("arx") ||
                                 family == QStringLiteral("exponential"))
@@ -214,11 +228,12 @@ TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleR
             }
         }
     }
-    // The law beats both baselines on every probe but the weakest (the tilt
-    // about y, under 1 µm against the probes' 0.1 µm noise).
-    tally.print("rig's own drift law");
-    EXPECT_GE(tally.reference_beats, 24);
-    EXPECT_EQ(tally.beaten_where_reference_beats, tally.reference_beats);
+    std::printf("the baselines leave room on %d; auto beats both there\n", withRoom);
+    EXPECT_GE(withRoom, 20);  // x, y, z and the tilt about x of every seed, roughly
+    // Not asserted: beating both on the tilt about y, where a perfect model
+    // does beyond chance on four seeds of six, by 0.004–0.016 µm (see
+    // docs/models.md).
+    tally.print();
 }
 
 }  // namespace

@@ -5,14 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <limits>
 
 #include "core/models/AutoModel.h"
-#include "core/models/FirstOrderLag.h"
 #include "core/models/LeastSquares.h"
 #include "core/models/RunDataAccess.h"
-#include "core/rig/SpindleThermalNetwork.h"
 
 namespace driftlab::test {
 namespace {
@@ -41,16 +38,14 @@ diagnosis::StretchSquares heldOutStretches(const std::vector<RunData>& test,
     return s;
 }
 
-/// Held-out RMS of least squares (with an offset) on the columns `inputs`
-/// gives for a run's observations.
+/// Held-out RMS of least squares (with an offset) on the rises of `channels`.
 HeldOut leastSquaresHeldOut(const std::vector<models::RunData>& train,
-                            const std::vector<models::RunData>& test,
-                            const std::function<Eigen::MatrixXd(const RunData&)>& inputs,
+                            const std::vector<models::RunData>& test, const QStringList& channels,
                             double* trainRss) {
     auto design = [&](const RunData& run) {
-        const Eigen::MatrixXd columns = inputs(run);
-        Eigen::MatrixXd X(columns.rows(), columns.cols() + 1);
-        X << columns, Eigen::VectorXd::Ones(columns.rows());
+        const Eigen::MatrixXd rises = risesAt(run, channels, run.observationPoints());
+        Eigen::MatrixXd X(rises.rows(), rises.cols() + 1);
+        X << rises, Eigen::VectorXd::Ones(rises.rows());
         return X;
     };
     const LeastSquaresFit fit =
@@ -59,25 +54,6 @@ HeldOut leastSquaresHeldOut(const std::vector<models::RunData>& train,
     const Eigen::VectorXd r =
         stackRows(test, &RunData::observedErrors) - stackRows(test, design) * fit.coefficients;
     return {std::sqrt(r.squaredNorm() / double(r.size())), heldOutStretches(test, r)};
-}
-
-HeldOut risesHeldOut(const std::vector<models::RunData>& train,
-                     const std::vector<models::RunData>& test, const QStringList& channels,
-                     double* trainRss) {
-    return leastSquaresHeldOut(
-        train, test,
-        [&](const RunData& run) { return risesAt(run, channels, run.observationPoints()); },
-        trainRss);
-}
-
-/// The channel's rise through a first-order lag of `tau_s`, at the times.
-Eigen::VectorXd laggedRise(const RunData& run, const QString& channel, double tau_s,
-                           const std::vector<double>& times) {
-    for (const TemperatureRise& t : run.temperatures)
-        if (t.channel_id == channel)
-            return lagResponse({t.rise_K.time_s, t.rise_K.value}, tau_s, times);
-    ADD_FAILURE() << "run " << qPrintable(run.run_id) << " has no channel " << qPrintable(channel);
-    return Eigen::VectorXd::Zero(Eigen::Index(times.size()));
 }
 
 }  // namespace
@@ -104,31 +80,6 @@ HeldOut perfectModelHeldOut(const std::vector<models::RunData>& test,
             heldOutStretches(test, residual)};
 }
 
-HeldOut rigDriftLawHeldOut(const std::vector<models::RunData>& train,
-                           const std::vector<models::RunData>& test) {
-    using rig::SpindleNode;
-    using rig::SpindleThermalNetwork;
-    const double shaft_s = SpindleThermalNetwork::timeConstant_s(SpindleNode::Shaft);
-    const double core_s = SpindleThermalNetwork::timeConstant_s(SpindleNode::ColumnCore);
-    return leastSquaresHeldOut(
-        train, test,
-        [&](const RunData& run) {
-            const std::vector<PredictionPoint> at = run.observationPoints();
-            std::vector<double> times;
-            for (const PredictionPoint& p : at) times.push_back(p.time_s);
-            Eigen::MatrixXd X(Eigen::Index(at.size()), 5);
-            // housing and column skin; the shaft from the bearing seat and the
-            // motor; the column core from the skin.
-            X.leftCols(2) =
-                risesAt(run, {QStringLiteral("T_spindle"), QStringLiteral("T_column")}, at);
-            X.col(2) = laggedRise(run, QStringLiteral("T_spindle_bearing"), shaft_s, times);
-            X.col(3) = laggedRise(run, QStringLiteral("T_spindle_motor"), shaft_s, times);
-            X.col(4) = laggedRise(run, QStringLiteral("T_column"), core_s, times);
-            return X;
-        },
-        nullptr);
-}
-
 std::vector<models::RunData> driftDataset(const Campaign& c, const QStringList& runs,
                                           const QString& target) {
     models::DatasetOptions options;
@@ -144,13 +95,13 @@ LeastSquaresBaselines leastSquaresBaselines(const std::vector<models::RunData>& 
     for (const TemperatureRise& t : train.front().temperatures)
         if (t.unusable.isEmpty()) sensors << t.channel_id;
     LeastSquaresBaselines b;
-    b.all_rises = risesHeldOut(train, test, sensors, nullptr);
+    b.all_rises = leastSquaresHeldOut(train, test, sensors, nullptr);
     // The pair a user would pick from the training runs: least training RSS.
     double bestPairRss = std::numeric_limits<double>::infinity();
     for (qsizetype i = 0; i < sensors.size(); ++i)
         for (qsizetype j = i + 1; j < sensors.size(); ++j) {
             double rss = 0;
-            HeldOut heldOut = risesHeldOut(train, test, {sensors[i], sensors[j]}, &rss);
+            HeldOut heldOut = leastSquaresHeldOut(train, test, {sensors[i], sensors[j]}, &rss);
             if (rss < bestPairRss) {
                 bestPairRss = rss;
                 b.best_pair = std::move(heldOut);
@@ -162,7 +113,7 @@ LeastSquaresBaselines leastSquaresBaselines(const std::vector<models::RunData>& 
 
 AutoAgainstBaselines autoAgainstBaselines(const std::vector<models::RunData>& train,
                                           const std::vector<models::RunData>& test,
-                                          const QString& label, std::optional<HeldOut> reference) {
+                                          const QString& label, HeldOut perfect) {
     AutoAgainstBaselines result;
     result.baselines = leastSquaresBaselines(train, test);
     models::AutoModel model;
@@ -189,23 +140,19 @@ AutoAgainstBaselines autoAgainstBaselines(const std::vector<models::RunData>& tr
     std::printf("%-14s %6.3f µm (%-12s) %6.3f µm  %6.3f µm (%s)  %5.3f", qPrintable(label),
                 result.score.rms_um, qPrintable(result.chosen), b.all_rises.rms_um,
                 b.best_pair.rms_um, qPrintable(b.best_pair_sensors), result.probability_better);
-    if (reference) {
-        result.probability_reference_better =
-            std::min(diagnosis::probabilityLarger(reference->stretches, &b.all_rises.stretches),
-                     diagnosis::probabilityLarger(reference->stretches, &b.best_pair.stretches));
-        std::printf("  %6.3f µm  %5.3f", reference->rms_um, result.probability_reference_better);
-        result.reference = std::move(reference);
-    }
+    result.probability_perfect_better =
+        std::min(diagnosis::probabilityLarger(perfect.stretches, &b.all_rises.stretches),
+                 diagnosis::probabilityLarger(perfect.stretches, &b.best_pair.stretches));
+    std::printf("  %6.3f µm  %5.3f", perfect.rms_um, result.probability_perfect_better);
+    result.perfect = std::move(perfect);
     std::printf("\n");
     return result;
 }
 
-void printAutoAgainstBaselinesHeader(const char* referenceName) {
+void printAutoAgainstBaselinesHeader() {
     std::printf(
         "held out       auto (chosen)          all rises  best pair (on training)  "
-        "P(auto better than both)");
-    if (referenceName) std::printf("  %s  P(it beats both)", referenceName);
-    std::printf("\n");
+        "P(auto better than both)  perfect model  P(it beats both)\n");
 }
 
 void AutoAgainstBaselinesTally::add(const AutoAgainstBaselines& a) {
@@ -213,19 +160,19 @@ void AutoAgainstBaselinesTally::add(const AutoAgainstBaselines& a) {
     beaten += a.beatsBoth();
     surely_better += a.probability_better > 0.95;
     surely_worse += a.probability_better < 0.05;
-    reference_beats += a.referenceSurelyBeatsBoth();
-    beaten_where_reference_beats += a.referenceSurelyBeatsBoth() && a.beatsBoth();
+    perfect_beats += a.perfectSurelyBeatsBoth();
+    beaten_where_perfect_beats += a.perfectSurelyBeatsBoth() && a.beatsBoth();
 }
 
-void AutoAgainstBaselinesTally::print(const char* referenceName) const {
+void AutoAgainstBaselinesTally::print() const {
     std::printf(
         "auto beats both baselines on %d of %d; surely (P > 0.95) on %d; a baseline surely "
         "better on %d\n",
         beaten, cases, surely_better, surely_worse);
-    if (referenceName)
-        std::printf(
-            "the %s beats both baselines beyond chance on %d; auto beats both on %d of those\n",
-            referenceName, reference_beats, beaten_where_reference_beats);
+    std::printf(
+        "a perfect model beats both baselines beyond chance on %d; auto beats both on %d of "
+        "those\n",
+        perfect_beats, beaten_where_perfect_beats);
 }
 
 }  // namespace driftlab::test

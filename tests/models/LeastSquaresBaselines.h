@@ -5,7 +5,6 @@
 
 #include <QString>
 #include <algorithm>
-#include <optional>
 #include <vector>
 
 #include "core/diagnosis/StretchJackknife.h"
@@ -38,17 +37,6 @@ struct LeastSquaresBaselines {
 LeastSquaresBaselines leastSquaresBaselines(const std::vector<models::RunData>& train,
                                             const std::vector<models::RunData>& test);
 
-/// The rig's own drift law (core/rig/SpindleTestSimulator): every probe is
-/// a mix of the rises of the spindle shaft, its housing, the column skin and
-/// the column core. Housing and skin carry thermometers (T_spindle, T_column);
-/// shaft and core do not, but each is a first-order lag, with the network's
-/// time constant, of sensed nodes (the bearing seat and motor; the column
-/// skin). Its six gains fitted on `train` and scored on `test`: what the true
-/// form reaches on these runs. Where it does not beat the baselines, the
-/// probe's drift is within the measurement's noise and no model can.
-HeldOut rigDriftLawHeldOut(const std::vector<models::RunData>& train,
-                           const std::vector<models::RunData>& test);
-
 /// What a perfect model scores on `test`: the probe's drift before its noise
 /// (`truth_um`: per run, the value at each observation's time, from the run's
 /// start), given the same zero as the measurement (the median over the first
@@ -67,35 +55,31 @@ struct AutoAgainstBaselines {
     /// (the smaller of the two): the diagnosis's jackknife over stretches of
     /// the held-out runs, since a drift residual is smooth for many minutes.
     double probability_better = 0;
-    /// A reference on the same held-out runs (the rig's drift law, a perfect
-    /// model), and the probability that it beats both baselines.
-    std::optional<HeldOut> reference;
-    double probability_reference_better = 0;
+    /// A perfect model (perfectModelHeldOut) on the same held-out runs, and
+    /// the probability that it beats both baselines.
+    HeldOut perfect;
+    double probability_perfect_better = 0;
     bool beatsBoth() const { return score.rms_um < baselines.better_um(); }
-    bool referenceSurelyBeatsBoth() const {
-        return reference && probability_reference_better > 0.95;
-    }
+    bool perfectSurelyBeatsBoth() const { return probability_perfect_better > 0.95; }
 };
 
 /// The comparison, printed as one row labelled `label` of the table that
-/// printAutoAgainstBaselinesHeader() heads, with the `reference` beside it
-/// when there is one; a failed fit is a test failure.
+/// printAutoAgainstBaselinesHeader() heads, with the `perfect` model beside
+/// it; a failed fit is a test failure.
 AutoAgainstBaselines autoAgainstBaselines(const std::vector<models::RunData>& train,
                                           const std::vector<models::RunData>& test,
-                                          const QString& label,
-                                          std::optional<HeldOut> reference = {});
-/// `referenceName`: the column of the reference ("rig's law"), if any.
-void printAutoAgainstBaselinesHeader(const char* referenceName = nullptr);
+                                          const QString& label, HeldOut perfect);
+void printAutoAgainstBaselinesHeader();
 
 /// How often `auto` beats both baselines, and how often the held-out
 /// difference is beyond chance (P > 0.95 either way).
 struct AutoAgainstBaselinesTally {
     int cases = 0, beaten = 0, surely_better = 0, surely_worse = 0;
-    /// Probes where the reference beats both baselines beyond chance, and
+    /// Probes where a perfect model beats both baselines beyond chance, and
     /// where `auto` beats both of them there.
-    int reference_beats = 0, beaten_where_reference_beats = 0;
+    int perfect_beats = 0, beaten_where_perfect_beats = 0;
     void add(const AutoAgainstBaselines& a);
-    void print(const char* referenceName = nullptr) const;
+    void print() const;
 };
 
 }  // namespace driftlab::test

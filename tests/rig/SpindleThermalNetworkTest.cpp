@@ -1,10 +1,12 @@
 // The spindle head's thermal network against closed forms: the steady state
 // −A⁻¹·B·u, exact stepping (the same state whatever the step), a single node's
-// first-order response, and the drift lagging every sensor.
+// first-order response, the drift lagging every sensor, and the simulator's
+// noise-free twin.
 
 #include <gtest/gtest.h>
 #include <Eigen/LU>
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 
 #include "core/rig/SpindleTestSimulator.h"
@@ -79,6 +81,40 @@ TEST(SpindleThermalNetwork, theDriftIsNoFunctionOfTheSensorsCurrentReadings) {
     const double rms_um = std::sqrt(residual.squaredNorm() / double(z.size()));
     EXPECT_GT(rms_um, 1.0);
     EXPECT_LT(z.minCoeff(), -15);  // against tens of µm of drift
+}
+
+TEST(SpindleTestSimulator, aNoiseFreeTwinReadsTheSameThermometersAndTheProbesDrift) {
+    // The tests' perfect model: the same run with probe_noise_um = 0 keeps
+    // every thermometer reading and leaves the probes' drift without its
+    // noise, so noisy − noise-free is the noise alone: mean 0, σ 0.1 µm.
+    std::vector<QString> columns;
+    for (const Channel& c : spindleTestChannels()) columns.push_back(c.id);
+    SpindleTestSpec spec = spindleTestProgramme(2);
+    const driftlab::Run noisy = simulateSpindleTest(spec, columns);
+    spec.probe_noise_um = 0;
+    const driftlab::Run twin = simulateSpindleTest(spec, columns);
+    ASSERT_EQ(noisy.samples.time_s, twin.samples.time_s);
+    for (const Channel& c : spindleTestChannels()) {
+        const auto k = std::size_t(noisy.samples.columnIndex(c.id));
+        const std::vector<double>& a = noisy.samples.values[k];
+        const std::vector<double>& b = twin.samples.values[k];
+        if (c.quantity != Quantity::Displacement) {
+            EXPECT_EQ(a, b) << qPrintable(c.id);
+            continue;
+        }
+        double sum = 0, squares = 0, roughness = 0;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            sum += a[i] - b[i];
+            squares += (a[i] - b[i]) * (a[i] - b[i]);
+            if (i >= 2) roughness = std::max(roughness, std::abs(b[i] - 2 * b[i - 1] + b[i - 2]));
+        }
+        const double n = double(a.size()), mean = sum / n;
+        EXPECT_NEAR(mean, 0, 0.01) << qPrintable(c.id);  // σ/√n ≈ 0.001 µm
+        EXPECT_NEAR(std::sqrt(squares / n - mean * mean), 0.1, 0.005) << qPrintable(c.id);
+        // The twin's drift is smooth: no 5 s step bends it by more than the
+        // probes' 1 nm resolution and a speed change's kink.
+        EXPECT_LT(roughness, 0.05) << qPrintable(c.id);
+    }
 }
 
 TEST(SpindleTestProgrammes, eachRunHasItsOwnSpeedsAndEndsAtRest) {
