@@ -201,14 +201,13 @@ int benchCommand(const QStringList& args) {
         std::vector<double> us;
         for (int i = 0; i < std::max(1, parser.value(repeat).toInt()); ++i)
             us.push_back(onlineStepMicroseconds());
-        std::sort(us.begin(), us.end());
-        const double median = us[us.size() / 2];
+        const double median_us = median(us);
         if (parser.isSet(QStringLiteral("json")))
-            printJson({{QStringLiteral("online_step_us"), median}});
+            printJson({{QStringLiteral("online_step_us"), median_us}});
         else
             printLine(QStringLiteral("online model    %1 µs per observer step + 128-point table "
                                      "update (median of %2; target < 50 µs)")
-                          .arg(median, 0, 'f', 2)
+                          .arg(median_us, 0, 'f', 2)
                           .arg(us.size()));
         return 0;
     }
@@ -267,15 +266,14 @@ int benchCommand(const QStringList& args) {
         for (int i = 0; i < std::max(1, parser.value(repeat).toInt()); ++i)
             seconds.push_back(diagnosisSeconds());
         endProgressLine();
-        std::sort(seconds.begin(), seconds.end());
-        const double median = seconds[seconds.size() / 2];
+        const double median_s = median(seconds);
         if (parser.isSet(QStringLiteral("json")))
-            printJson({{QStringLiteral("diagnosis_s"), median}});
+            printJson({{QStringLiteral("diagnosis_s"), median_s}});
         else
             printLine(
                 QStringLiteral("diagnosis       candidates and second pass, 5 runs, 2 effects: "
                                "%1 s (median of %2; target < 20 s)")
-                    .arg(median, 0, 'f', 1)
+                    .arg(median_s, 0, 'f', 1)
                     .arg(seconds.size()));
         return 0;
     }

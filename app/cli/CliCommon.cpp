@@ -272,13 +272,6 @@ const Run& choosePositioningRun(const Campaign& campaign, const QString& wanted)
                    2);
 }
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    if (n == 0) return 0;
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 QString umText(double value_um) {
     return std::isfinite(value_um) ? QString::number(value_um, 'f', 3) : QStringLiteral("n/a");
 }

@@ -11,6 +11,7 @@
 
 #include "core/bundle/BundleSource.h"
 #include "core/domain/Campaign.h"
+#include "core/domain/Median.h"  // median of a benchmark's repetitions
 #include "db/ModelFitStore.h"
 
 namespace driftlab::cli {
@@ -75,8 +76,6 @@ void printWarnings(const QStringList& warnings);
 bool printProgress(const QString& label, double fraction);
 /// Ends an unfinished progress line so that what follows starts on its own line.
 void endProgressLine();
-/// The median of a benchmark's repetitions (the mean of the middle two when even).
-double median(std::vector<double> values);
 
 /// The value of a numeric option; throws CliError (exit 2) naming the option
 /// when it is not a finite number, or (positiveNumber) not above zero.

@@ -16,7 +16,10 @@ double rms(const std::vector<double>& v) {
     return v.empty() ? 0.0 : std::sqrt(s / double(v.size()));
 }
 
-double median(std::vector<double> v) {
+// The upper middle for an even count, not core/domain/Median.h's mean of the
+// two: of two held-out runs' noise the larger, which the thresholds of the
+// diagnosis were set with.
+double upperMedian(std::vector<double> v) {
     if (v.empty()) return std::nan("");
     std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
     return v[v.size() / 2];
@@ -46,7 +49,7 @@ double temperatureNoise_K(const std::vector<double>& values) {
     // A robust spread (the nut sensor jumps as the nut moves): 1.4826·MAD ≈ σ.
     std::vector<double> absolute;
     for (double d : second) absolute.push_back(std::abs(d));
-    return 1.4826 * median(absolute) / std::sqrt(6.0);
+    return 1.4826 * upperMedian(absolute) / std::sqrt(6.0);
 }
 
 double residualNoise_K(const std::vector<models::ReadingResiduals>& residuals,
@@ -56,7 +59,7 @@ double residualNoise_K(const std::vector<models::ReadingResiduals>& residuals,
         for (const auto& sensor : r.sensors)
             if (sensor.channel_id == channel)
                 perRun.push_back(temperatureNoise_K(sensor.residual_K));
-    return median(perRun);
+    return upperMedian(perRun);
 }
 
 QuantityResidual quantityResidual(const std::vector<models::ReadingResiduals>& residuals,
@@ -120,7 +123,7 @@ ResidualSummary summarise(const std::vector<models::ReadingResiduals>& residuals
         if (s.worst_channel.isEmpty() || r > s.worst_channel_rms_K) {
             s.worst_channel = channel;
             s.worst_channel_rms_K = r;
-            s.worst_channel_noise_K = median(noise[channel]);
+            s.worst_channel_noise_K = upperMedian(noise[channel]);
         }
     }
     return s;

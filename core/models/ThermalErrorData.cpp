@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/domain/Median.h"
 #include "core/models/DriveTorque.h"
 #include "core/models/ModelError.h"
 #include "core/models/RunDataAccess.h"
@@ -41,13 +42,6 @@ void checkSampleTable(const Run& run) {
                     .arg(run.id, s.columns[c])
                     .arg(s.values[c].size())
                     .arg(s.time_s.size()));
-}
-
-double median(std::vector<double> v) {
-    const std::size_t mid = v.size() / 2;
-    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(mid), v.end());
-    if (v.size() % 2 == 1) return v[mid];
-    return 0.5 * (v[mid] + *std::max_element(v.begin(), v.begin() + std::ptrdiff_t(mid)));
 }
 
 /// The present samples of a column (NaN marks a missing sample).

@@ -3,19 +3,10 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/domain/Median.h"
 #include "core/physics/ScrewThermalModel.h"
 
 namespace driftlab::physics {
-
-namespace {
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-}  // namespace
 
 BenchmarkCampaign::BenchmarkCampaign() {
     parameters.cells = kCells;

@@ -12,7 +12,9 @@ constexpr double kMadToSigma = 1.4826;
 // Readings are decimal numbers: 20.07 − 20.06 is not exactly 0.01.
 constexpr double kRoundingSlack = 1e-9;
 
-double median(std::vector<double>& values) {
+// In place (core/domain/Median.h copies): it runs on every reading of a live
+// window, and the caller reuses the buffer.
+double medianInPlace(std::vector<double>& values) {
     const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
     std::nth_element(values.begin(), middle, values.end());
     const double upper = *middle;
@@ -198,9 +200,9 @@ bool ChannelHealthChecker::isSpike(std::size_t position) const {
             values.push_back(m_window[i].value);
     // With fewer than half a window of readings the median says nothing.
     if (values.size() < half + 1) return false;
-    const double centre = median(values);
+    const double centre = medianInPlace(values);
     for (double& v : values) v = std::abs(v - centre);
-    const double sigma = kMadToSigma * median(values);
+    const double sigma = kMadToSigma * medianInPlace(values);
     const double threshold =
         std::max(m_settings.spike_mad_factor * sigma, m_settings.spike_min_deviation_K);
     return std::abs(m_window[position].value - centre) > threshold;

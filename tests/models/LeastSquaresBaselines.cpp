@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/domain/Median.h"
 #include "core/models/AutoModel.h"
 #include "core/models/LeastSquares.h"
 #include "core/models/RunDataAccess.h"
@@ -70,9 +71,7 @@ HeldOut perfectModelHeldOut(const std::vector<models::RunData>& test,
         std::vector<double> window;
         for (std::size_t i = 0; i < obs.size() && i < truth.size(); ++i)
             if (obs[i].time_s <= obs.front().time_s + referenceWindow_s) window.push_back(truth[i]);
-        std::nth_element(window.begin(), window.begin() + std::ptrdiff_t(window.size() / 2),
-                         window.end());
-        const double zero_um = window.empty() ? 0 : window[window.size() / 2];
+        const double zero_um = window.empty() ? 0 : median(window);
         for (std::size_t i = 0; i < obs.size(); ++i, ++at)
             residual[at] -= i < truth.size() ? truth[i] - zero_um : 0;
     }

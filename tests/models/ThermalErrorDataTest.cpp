@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/domain/Median.h"
 #include "core/models/ModelError.h"
 #include "core/models/RunDataAccess.h"
 #include "core/models/ThermalErrorData.h"
@@ -114,6 +115,15 @@ TEST(ThermalErrorData, driftTargetIsTheChannelMinusTheMedianOfItsFirstMinute) {
     const DatasetResult firstOnly = buildDataset(c, {QStringLiteral("SP1")}, options);
     ASSERT_TRUE(firstOnly.ok()) << qPrintable(firstOnly.error);
     EXPECT_NEAR(firstOnly.runs.front().observations.back().error_um, 13 - 3.4, 1e-12);
+}
+
+TEST(ThermalErrorData, theZeroIsTheMedianOfTheFirstMinuteWhateverItsCount) {
+    // Twelve readings in a minute at 5 s, six at 10 s: an even count's zero is
+    // the mean of the middle two, in any order; a spike does not move it.
+    EXPECT_DOUBLE_EQ(median({3.5, 3.4, 9.0, 3.6}), 3.55);
+    EXPECT_DOUBLE_EQ(median({3.6, 3.4, 3.5}), 3.5);
+    EXPECT_DOUBLE_EQ(median({2.0}), 2.0);
+    EXPECT_TRUE(std::isnan(median({})));
 }
 
 TEST(ThermalErrorData, runWithoutPositioningDataIsAnError) {
