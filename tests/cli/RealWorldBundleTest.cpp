@@ -235,6 +235,28 @@ csv.writer(open(path, 'w', newline='')).writerows(rows[:1] + [r for r in rows[1:
         << fit.err.constData();
 }
 
+TEST(RealWorldBundle, directionsPaddedToAFixedWidthAreThePlainSpelling) {
+    // A fixed-width export pads its cells: ' +' and '- ' are + and -, not
+    // another spelling to warn about.
+    QTemporaryDir dir;
+    const QString bundle = dir.filePath(QStringLiteral("padded"));
+    copyBundle(exampleBundlePath(), bundle);
+    const char* script = R"(
+import csv, sys
+path = sys.argv[1] + '/positioning.csv'
+rows = list(csv.reader(open(path, newline='')))
+for row in rows[1:]:
+    row[4] = {'+': ' +', '-': '- '}[row[4]]
+csv.writer(open(path, 'w', newline='')).writerows(rows)
+)";
+    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromUtf8(script), bundle});
+    const BundleReadResult read = readBundle(bundle);
+    ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
+    EXPECT_FALSE(read.warnings.join(QLatin1Char('\n')).contains(QStringLiteral("direction")))
+        << qPrintable(read.warnings.join(QLatin1Char('\n')));
+    EXPECT_EQ(importedAndExported(bundle, dir.path()), exampleCampaign());
+}
+
 TEST(RealWorldBundle, aForeignExportWithEveryQuirkAtOnceImportsAsThePlainBundle) {
     // The quirks above, together, as one package and one hand-edited file would
     // write them: each repair must leave the others' data alone (the cycles are

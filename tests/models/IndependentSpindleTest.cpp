@@ -18,29 +18,41 @@
 namespace driftlab::models {
 namespace {
 
-/// The probe's drift before its noise at each observation of the runs, from
-/// the simulator's truth_drift.csv (run, time_s, one column per probe).
-std::vector<std::vector<double>> truthAt(const QString& path, const std::vector<RunData>& runs,
-                                         const QString& probe) {
+/// The simulator's truth_drift.csv (run, time_s, one column per probe): the
+/// probes' drift before their noise, by run and time (in 0.1 s).
+struct TruthDrift {
+    QStringList probes;
+    std::map<std::pair<QString, qint64>, std::vector<double>> rows;
+};
+
+TruthDrift readTruthDrift(const QString& path) {
     QFile file(path);
     EXPECT_TRUE(file.open(QIODevice::ReadOnly | QIODevice::Text)) << qPrintable(path);
     QTextStream in(&file);
-    const QStringList header = in.readLine().split(QLatin1Char(','));
-    const qsizetype column = header.indexOf(probe);
-    EXPECT_GE(column, 2) << qPrintable(probe);
-    std::map<std::pair<QString, qint64>, double> truth;  // (run, time in 0.1 s)
+    TruthDrift truth;
+    truth.probes = in.readLine().split(QLatin1Char(',')).mid(2);
     while (!in.atEnd()) {
         const QStringList cells = in.readLine().split(QLatin1Char(','));
-        if (cells.size() != header.size()) continue;
-        truth[{cells[0], qRound64(cells[1].toDouble() * 10)}] = cells[column].toDouble();
+        if (cells.size() != truth.probes.size() + 2) continue;
+        std::vector<double>& row = truth.rows[{cells[0], qRound64(cells[1].toDouble() * 10)}];
+        for (qsizetype k = 2; k < cells.size(); ++k) row.push_back(cells[k].toDouble());
     }
+    return truth;
+}
+
+/// The probe's drift before its noise at each observation of the runs.
+std::vector<std::vector<double>> truthAt(const TruthDrift& truth, const std::vector<RunData>& runs,
+                                         const QString& probe) {
+    const qsizetype column = truth.probes.indexOf(probe);
+    EXPECT_GE(column, 0) << qPrintable(probe);
     std::vector<std::vector<double>> at;
     for (const RunData& run : runs) {
         at.emplace_back();
         for (const ErrorObservation& o : run.observations) {
-            const auto found = truth.find({run.run_id, qRound64(o.time_s * 10)});
-            EXPECT_TRUE(found != truth.end()) << qPrintable(run.run_id) << " " << o.time_s;
-            at.back().push_back(found == truth.end() ? 0 : found->second);
+            const auto found = truth.rows.find({run.run_id, qRound64(o.time_s * 10)});
+            EXPECT_TRUE(found != truth.rows.end()) << qPrintable(run.run_id) << " " << o.time_s;
+            at.back().push_back(
+                found == truth.rows.end() || column < 0 ? 0 : found->second[std::size_t(column)]);
         }
     }
     return at;
@@ -56,6 +68,8 @@ TEST(IndependentSpindle, autoAgainstLeastSquaresOnAllSixteenRisesAndTheBestPair)
         const BundleReadResult read = readBundle(suite.filePath(name));
         ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
         const Campaign& c = *read.campaign;
+        const TruthDrift truth =
+            readTruthDrift(suite.filePath(name + QStringLiteral("/truth_drift.csv")));
         for (const Channel& probe : c.channels) {
             if (probe.quantity != Quantity::Displacement) continue;
             SCOPED_TRACE(qPrintable(name + QLatin1Char(' ') + probe.id));
@@ -65,9 +79,7 @@ TEST(IndependentSpindle, autoAgainstLeastSquaresOnAllSixteenRisesAndTheBestPair)
             ASSERT_EQ(train.front().temperatures.size(), 16u);
             const test::AutoAgainstBaselines a = test::autoAgainstBaselines(
                 train, test, name + QLatin1Char(' ') + probe.id,
-                test::perfectModelHeldOut(
-                    test, truthAt(suite.filePath(name + QStringLiteral("/truth_drift.csv")), test,
-                                  probe.id)));
+                test::perfectModelHeldOut(test, truthAt(truth, test, probe.id)));
             ASSERT_TRUE(a.score.ok());
             tally.add(a);
             // Sixteen sensors around the heat paths follow the unsensed shaft
