@@ -2,13 +2,15 @@
 // Dynamic (ARX-style) regression of the thermal error on temperature rises:
 // each chosen sensor enters with its current rise and with its rise passed
 // through a first-order lag whose time constant is fitted,
-//   drift channel:     E(t)   = Σ_j [a_j·ΔT_j(t) + g_j·L_τj[ΔT_j](t)] + c
+//   drift channel:     E(t)   = Σ_j [a_j·ΔT_j(t) + g_j·L_τj[ΔT_j](t)] (+ c)
 //   positioning error: E(x,t) = Σ_j [ΔT_j·(a_j + b_j·dx) + L_τj[ΔT_j]·(g_j + h_j·dx)]
-// with dx = x − x_fixed. Drift that lags every sensor (the shaft and the column
-// core carry no sensor) shows as hysteresis against the current temperatures; a
-// lagged input follows it. The sensors and their time constants are chosen by
-// cross-validation over the training runs (leave one run out; time blocks for
-// a single run), as the ETH Zürich group's ARX pipeline selects its inputs.
+// with dx = x − x_fixed. A drift channel's fit gives each training run its own
+// zero; a prediction takes none, or their mean c where cross-validation finds
+// an offset the runs share (DynamicRegressionSearch.h). Drift that lags every sensor (the shaft and
+// the column core carry no sensor) shows as hysteresis against the current temperatures; a lagged
+// input follows it. The sensors and their time constants are chosen by cross-validation over the
+// training runs (leave one run out; time blocks for a single run), as the ETH Zürich group's ARX
+// pipeline selects its inputs.
 
 #include <QStringList>
 #include <vector>
@@ -52,6 +54,9 @@ private:
     DynamicRegressionOptions options_;
     std::vector<Input> inputs_;
     Eigen::VectorXd coefficients_;
+    /// A drift channel's offset at prediction: the training runs' mean zero,
+    /// where cross-validation preferred it to none (µm).
+    double commonZero_um_ = 0;
 };
 
 }  // namespace driftlab::models

@@ -212,6 +212,7 @@ RunData runData(const Campaign& campaign, const Run& run, const DatasetOptions& 
     data.kind = run.kind;
     data.target_channel = options.target_channel;
     data.max_gap_s = options.max_gap_s;
+    data.reference_window_s = options.reference_window_s;
     if (options.target_channel.isEmpty()) {
         if (!isFeedAxisRun(run.kind))
             throw ModelError(QStringLiteral("run '%1' is a %2 run: its thermal error is in its "

@@ -81,7 +81,8 @@ struct RunData {
     std::optional<Screw> screw;  ///< the campaign's screw
     std::optional<double> nut_length_mm;
     std::optional<Interferometer> interferometer;
-    double max_gap_s = 120;  ///< from DatasetOptions
+    double max_gap_s = 120;          ///< from DatasetOptions
+    double reference_window_s = 60;  ///< from DatasetOptions
     std::vector<ErrorObservation> observations;
     /// Every temperature channel of the campaign, in declaration order.
     std::vector<TemperatureRise> temperatures;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <QtGlobal>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -34,8 +35,11 @@ constexpr double kDriftLag_s = 1800;
 
 /// Spindle runs whose z drift is −3 µm/K times the housing rise through a lag
 /// of 1800 s: each run heats with its own time constant and amplitude. With
-/// `steadyRoom`, a room thermometer reads 20 °C with ±0.01 K of noise.
-Campaign laggedDriftCampaign(bool steadyRoom = false) {
+/// `steadyRoom`, a room thermometer reads 20 °C with ±0.01 K of noise. Each
+/// run's probe reads `firstMinuteShift_um[r]` more in its first minute only,
+/// which moves the run's zero as the noise of that minute does.
+Campaign laggedDriftCampaign(bool steadyRoom = false,
+                             const std::array<double, 3>& firstMinuteShift_um = {}) {
     std::vector<std::pair<QString, ChannelRole>> temperatures{
         {QStringLiteral("T_spindle"), ChannelRole::Spindle},
         {QStringLiteral("T_bed"), ChannelRole::Structure}};
@@ -47,6 +51,7 @@ Campaign laggedDriftCampaign(bool steadyRoom = false) {
     const struct { double tau_s, rise_K; } heating[] = {{1200, 4}, {500, 6}, {2500, 3}};
     for (int r = 0; r < 3; ++r) {
         const double tau = heating[r].tau_s, rise = heating[r].rise_K;
+        const double shift_um = firstMinuteShift_um[std::size_t(r)];
         driftlab::Run run = test::sampledRun(
             c, QStringLiteral("SP%1").arg(r + 1), 7200, 15,
             {{QStringLiteral("T_spindle"),
@@ -54,8 +59,10 @@ Campaign laggedDriftCampaign(bool steadyRoom = false) {
              {QStringLiteral("T_bed"), test::randomWalk(7 + unsigned(r), 0.02, 15, 7200)},
              {QStringLiteral("T_room"),
               [](double t) { return 20 + 0.01 * std::round(std::sin(0.37 * t)); }},
-             {QStringLiteral("D_z"),
-              [=](double t) { return 0.3 - 3 * rise * lagOfRise(t - 60, tau, kDriftLag_s); }}});
+             {QStringLiteral("D_z"), [=](double t) {
+                  return 0.3 + (t <= 60 ? shift_um : 0) -
+                         3 * rise * lagOfRise(t - 60, tau, kDriftLag_s);
+              }}});
         run.kind = RunKind::Spindle;
         c.runs.push_back(run);
     }
@@ -84,6 +91,56 @@ TEST(DynamicRegression, recoversTheLagOfAClosedFormAndPredictsARunHeatedDifferen
     EXPECT_LT(arxScore.rms_um, 0.03 * arxScore.uncompensated_rms_um);
     EXPECT_LT(arxScore.rms_um, 0.2 * staticScore.rms_um)
         << "the static regression cannot follow a drift that lags the sensor";
+}
+
+/// arx fitted on SP1 and SP2 of `c`'s z drift, and its held-out score on SP3.
+std::pair<FitSummary, Score> arxOnTwoRunsScoredOnTheThird(const Campaign& c) {
+    const QString z = QStringLiteral("D_z");
+    DynamicRegressionModel arx;
+    const FitSummary fit = arx.fit(test::driftDataset(c, {"SP1", "SP2"}, z));
+    EXPECT_TRUE(fit.success) << qPrintable(fit.message);
+    const Score score = scoreModel(arx, test::driftDataset(c, {"SP3"}, z));
+    EXPECT_TRUE(score.ok()) << qPrintable(score.error);
+    return {fit, score};
+}
+
+TEST(DynamicRegression, eachTrainingRunsZeroIsFittedApartAndLeftOutOfThePrediction) {
+    // SP1's first minute reads 0.3 µm high and SP2's 0.2 µm low, as that
+    // minute's noise moves a run's zero; SP3 is measured from a clean zero.
+    // One offset for both runs would leave the 0.5 µm between them to the
+    // gains. Each run's zero takes its own shift (beside what the clean runs'
+    // zeros hold: the lag's grid step leaves a few hundredths of a µm).
+    const auto [clean, cleanScore] = arxOnTwoRunsScoredOnTheThird(laggedDriftCampaign());
+    const auto [fit, score] = arxOnTwoRunsScoredOnTheThird(laggedDriftCampaign(false, {0.3, -0.2}));
+    auto zeroShift = [&](const char* run) {
+        const QString key = QStringLiteral("zero.") + QLatin1String(run);
+        return fit.parameters.at(key).value - clean.parameters.at(key).value;
+    };
+    EXPECT_NEAR(zeroShift("SP1"), -0.3, 0.03);
+    EXPECT_NEAR(zeroShift("SP2"), 0.2, 0.03);
+    EXPECT_EQ(fit.inputs, clean.inputs);
+    EXPECT_NEAR(fit.parameters.at(QStringLiteral("T_spindle.a_lag")).value,
+                clean.parameters.at(QStringLiteral("T_spindle.a_lag")).value, 0.01);
+    // The shifts share no offset: a prediction takes none.
+    EXPECT_FALSE(fit.parameters.count(QStringLiteral("c")));
+    EXPECT_EQ(fit.notes.filter(QStringLiteral("a prediction takes none")).size(), 1)
+        << qPrintable(fit.notes.join(QLatin1Char('\n')));
+    EXPECT_LT(score.rms_um, std::max(0.05, 1.5 * cleanScore.rms_um))
+        << "clean training runs: " << cleanScore.rms_um << " µm";
+}
+
+TEST(DynamicRegression, anOffsetEveryRunSharesIsPredicted) {
+    // Every run's first minute reads 0.3 µm high (a probe that settles after
+    // its first minute, say): every drift, the held-out run's too, sits 0.3 µm
+    // low after it. Cross-validation over the training runs finds that offset
+    // and the prediction takes it; left out, 0.3 µm would remain.
+    const auto [fit, score] =
+        arxOnTwoRunsScoredOnTheThird(laggedDriftCampaign(false, {0.3, 0.3, 0.3}));
+    ASSERT_TRUE(fit.parameters.count(QStringLiteral("c")))
+        << qPrintable(fit.notes.join(QLatin1Char('\n')));
+    EXPECT_LT(fit.parameters.at(QStringLiteral("c")).value, -0.15);
+    EXPECT_EQ(fit.notes.filter(QStringLiteral("a prediction takes their mean")).size(), 1);
+    EXPECT_LT(score.rms_um, 0.1);
 }
 
 TEST(DynamicRegression, aStaticTwoSensorErrorNeedsNoLag) {
@@ -211,9 +268,10 @@ TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleR
                 ++withRoom;
                 EXPECT_LT(a.score.rms_um, baseline);
             }
-            // … elsewhere (the tilt about y, under 1 µm) it ties within that
-            // fifth, and it stays within the probes' noise of a perfect model …
-            EXPECT_LT(a.score.rms_um, baseline + 0.02);
+            // … elsewhere (the tilt about y, under 1 µm) it is never worse by
+            // more than a tenth of that noise, and it stays within the noise of
+            // a perfect model …
+            EXPECT_LT(a.score.rms_um, baseline + 0.01);
             EXPECT_LT(a.score.rms_um, a.perfect.rms_um + 0.1);
             // … and where the drift lags (the shaft and the column core carry no
             // sensor), far better than the baselines, with a model that has
@@ -230,10 +288,13 @@ TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleR
     }
     std::printf("the baselines leave room on %d; auto beats both there\n", withRoom);
     EXPECT_GE(withRoom, 20);  // x, y, z and the tilt about x of every seed, roughly
-    // Not asserted: beating both on the tilt about y, where a perfect model
-    // does beyond chance on four seeds of six, by 0.004–0.016 µm (see
-    // docs/models.md).
     tally.print();
+    // On the tilt about y too, but for one campaign of six where the three
+    // training runs' zeros happen to share a sign and cross-validation takes
+    // their mean for an offset (see docs/models.md): 28 of 30, and all but
+    // that one where a perfect model beats both beyond chance.
+    EXPECT_GE(tally.beaten, 28);
+    EXPECT_GE(tally.beaten_where_perfect_beats, tally.perfect_beats - 1);
 }
 
 }  // namespace

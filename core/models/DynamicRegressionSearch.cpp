@@ -1,0 +1,212 @@
+#include "core/models/DynamicRegressionSearch.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/models/CrossValidation.h"
+#include "core/models/LeastSquares.h"
+#include "core/models/ModelError.h"
+#include "core/models/RunDataAccess.h"
+
+namespace driftlab::models::arx {
+
+namespace {
+
+/// The rise at the signal's first sample: a straight line through the first
+/// reference window, at its start. The rise is zero at the window's median,
+/// half a window into the run; a lag starts at rest where its input starts,
+/// and a part that heats from the run's first second would otherwise start
+/// its lagged node half a window's rise away from it.
+double riseAtStart(const Signal& rise, double window_s) {
+    double n = 0, t = 0, v = 0, tt = 0, tv = 0;
+    for (std::size_t i = 0; i < rise.time_s.size(); ++i) {
+        const double dt = rise.time_s[i] - rise.time_s.front();
+        if (dt > window_s) break;
+        n += 1;
+        t += dt;
+        v += rise.value[i];
+        tt += dt * dt;
+        tv += dt * rise.value[i];
+    }
+    const double spread = n * tt - t * t;
+    if (n < 3 || !(spread > 0)) return rise.value.front();
+    const double slope = (n * tv - t * v) / spread;
+    return (v - slope * t) / n;
+}
+
+}  // namespace
+
+PiecewiseInput riseInput(const RunData& run, const QString& channel, double until_s) {
+    for (const TemperatureRise& t : run.temperatures) {
+        if (t.channel_id != channel) continue;
+        requireCoverage(run, t.rise_K, until_s);
+        const std::vector<double>& v = t.rise_K.value;
+        const double start = riseAtStart(t.rise_K, run.reference_window_s);
+        PiecewiseInput input{t.rise_K.time_s, v};
+        for (std::size_t i = 0; i < v.size(); ++i)
+            input.value[i] = (i + 1 < v.size() ? 0.5 * (v[i] + v[i + 1]) : v[i]) - start;
+        return input;
+    }
+    throw ModelError(
+        QStringLiteral("run '%1' has no temperature channel '%2'").arg(run.run_id, channel));
+}
+
+double lastTime(const std::vector<PredictionPoint>& at) {
+    double last = 0;
+    for (const PredictionPoint& p : at) last = std::max(last, p.time_s);
+    return last;
+}
+
+Eigen::MatrixXd designOf(const Eigen::MatrixXd& features, const Eigen::VectorXd& dx,
+                         bool positionDependent) {
+    return positionDependent ? withPositionGain(features, dx) : features;
+}
+
+Eigen::MatrixXd withRunZeros(const Eigen::MatrixXd& X, const std::vector<int>& runOfRow, int runs) {
+    Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(X.rows(), X.cols() + runs);
+    Z.leftCols(X.cols()) = X;
+    for (Eigen::Index i = 0; i < X.rows(); ++i) Z(i, X.cols() + runOfRow[std::size_t(i)]) = 1;
+    return Z;
+}
+
+InputSearch::InputSearch(const std::vector<RunData>& training, const QStringList& candidates,
+                         const DynamicRegressionOptions& options)
+    : positionDependent_(training.front().positionDependent()) {
+    const double lo = std::log(options.min_tau_s), hi = std::log(options.max_tau_s);
+    for (int g = 0; g < options.grid_points; ++g)
+        grid_.push_back(std::exp(lo + (hi - lo) * g / (options.grid_points - 1)));
+    const std::vector<int> allFolds = crossValidationFolds(training, options.time_blocks);
+    std::size_t offset = 0;
+    int runIndex = 0;
+    std::vector<Eigen::VectorXd> raw(std::size_t(candidates.size())),
+        lagged(std::size_t(candidates.size()) * grid_.size());
+    std::vector<double> ys, dxs;
+    for (const RunData& run : training) {
+        const std::vector<PredictionPoint> all = run.observationPoints();
+        const std::size_t stride =
+            std::max<std::size_t>(1, all.size() / std::size_t(options.search_rows_per_run));
+        std::vector<PredictionPoint> kept;
+        for (std::size_t i = 0; i < all.size(); i += stride) {
+            kept.push_back(all[i]);
+            ys.push_back(run.observations[i].error_um);
+            dxs.push_back(all[i].position_mm - run.fixedEnd_mm());
+            folds_.push_back(allFolds[offset + i]);
+            runOf_.push_back(runIndex);
+        }
+        offset += all.size();
+        ++runIndex;
+        std::vector<double> times;
+        for (const PredictionPoint& p : kept) times.push_back(p.time_s);
+        for (qsizetype j = 0; j < candidates.size(); ++j) {
+            append(raw[std::size_t(j)], risesAt(run, {candidates[j]}, kept).col(0));
+            const PiecewiseInput input = riseInput(run, candidates[j], lastTime(kept));
+            for (std::size_t g = 0; g < grid_.size(); ++g)
+                append(lagged[std::size_t(j) * grid_.size() + g],
+                       lagResponse(input, grid_[g], times));
+        }
+    }
+    y_ = Eigen::Map<Eigen::VectorXd>(ys.data(), Eigen::Index(ys.size()));
+    dx_ = Eigen::Map<Eigen::VectorXd>(dxs.data(), Eigen::Index(dxs.size()));
+    raw_ = std::move(raw);
+    lagged_ = std::move(lagged);
+    foldCount_ = *std::max_element(folds_.begin(), folds_.end()) + 1;
+}
+
+std::pair<std::vector<int>, double> InputSearch::fitTaus(const std::vector<int>& chosen,
+                                                         int heldOut) const {
+    const std::vector<Eigen::Index> rows = rowsOutside(heldOut);
+    std::vector<int> index(chosen.size(), int(grid_.size()) / 2);
+    double best = rss(chosen, index, rows);
+    for (int sweep = 0; sweep < 4; ++sweep) {
+        bool moved = false;
+        for (std::size_t k = 0; k < chosen.size(); ++k) {
+            std::vector<int> trial = index;
+            for (int g = 0; g < int(grid_.size()); ++g) {
+                trial[k] = g;
+                const double r = rss(chosen, trial, rows);
+                if (r < best * (1 - 1e-9)) {
+                    best = r;
+                    index[k] = g;
+                    moved = true;
+                }
+            }
+        }
+        if (!moved) break;
+    }
+    return {index, best};
+}
+
+SetScore InputSearch::crossValidated(const std::vector<int>& chosen) const {
+    double bare = 0, shifted = 0;
+    for (int f = 0; f < foldCount_; ++f) {
+        const auto [index, trainRss] = fitTaus(chosen, f);
+        if (!std::isfinite(trainRss)) return {};
+        const std::vector<Eigen::Index> train = rowsOutside(f), test = rowsIn(f);
+        const LeastSquaresFit fit = solveLeastSquares(fitDesign(chosen, index, train), y_(train));
+        if (!fit.full_rank) return {};
+        const Eigen::MatrixXd X = design(chosen, index, test);
+        const Eigen::VectorXd residual = y_(test) - X * fit.coefficients.head(X.cols());
+        bare += residual.squaredNorm();
+        if (positionDependent_) continue;
+        const double zero = fit.coefficients.tail(fit.coefficients.size() - X.cols()).mean();
+        shifted += (residual.array() - zero).matrix().squaredNorm();
+    }
+    const auto n = double(y_.size());
+    if (!positionDependent_ && shifted < bare) return {std::sqrt(shifted / n), true};
+    return {std::sqrt(bare / n), false};
+}
+
+void InputSearch::append(Eigen::VectorXd& to, const Eigen::VectorXd& part) {
+    Eigen::VectorXd joined(to.size() + part.size());
+    joined << to, part;
+    to = std::move(joined);
+}
+
+std::vector<Eigen::Index> InputSearch::rowsOutside(int fold) const {
+    std::vector<Eigen::Index> rows;
+    for (std::size_t i = 0; i < folds_.size(); ++i)
+        if (folds_[i] != fold) rows.push_back(Eigen::Index(i));
+    return rows;
+}
+
+std::vector<Eigen::Index> InputSearch::rowsIn(int fold) const {
+    std::vector<Eigen::Index> rows;
+    for (std::size_t i = 0; i < folds_.size(); ++i)
+        if (folds_[i] == fold) rows.push_back(Eigen::Index(i));
+    return rows;
+}
+
+Eigen::MatrixXd InputSearch::design(const std::vector<int>& chosen, const std::vector<int>& index,
+                                    const std::vector<Eigen::Index>& rows) const {
+    Eigen::MatrixXd F(Eigen::Index(rows.size()), 2 * Eigen::Index(chosen.size()));
+    for (std::size_t k = 0; k < chosen.size(); ++k) {
+        const std::size_t j = std::size_t(chosen[k]);
+        F.col(2 * Eigen::Index(k)) = raw_[j](rows);
+        F.col(2 * Eigen::Index(k) + 1) = lagged_[j * grid_.size() + std::size_t(index[k])](rows);
+    }
+    return designOf(F, dx_(rows), positionDependent_);
+}
+
+Eigen::MatrixXd InputSearch::fitDesign(const std::vector<int>& chosen,
+                                       const std::vector<int>& index,
+                                       const std::vector<Eigen::Index>& rows) const {
+    const Eigen::MatrixXd X = design(chosen, index, rows);
+    if (positionDependent_) return X;
+    std::vector<int> compact(rows.size()), seen;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const int run = runOf_[std::size_t(rows[i])];
+        auto at = std::find(seen.begin(), seen.end(), run);
+        if (at == seen.end()) at = seen.insert(seen.end(), run);
+        compact[i] = int(at - seen.begin());
+    }
+    return withRunZeros(X, compact, int(seen.size()));
+}
+
+double InputSearch::rss(const std::vector<int>& chosen, const std::vector<int>& index,
+                        const std::vector<Eigen::Index>& rows) const {
+    const Eigen::MatrixXd X = fitDesign(chosen, index, rows);
+    if (X.rows() <= X.cols()) return kInfinity;
+    return solveLeastSquares(X, y_(rows)).rss;
+}
+
+}  // namespace driftlab::models::arx
