@@ -18,7 +18,7 @@ Campaign importedAndExported(const QString& bundle, const QDir& work, QByteArray
 
 /// Rewrites `bundle` with a Python script (given the folder) as other software
 /// would write it; imported and exported, it must be the plain example, and
-/// the import must warn `warning`.
+/// the import must warn `warning` (none at all: nullptr).
 void expectRewrittenImportsAsThePlainBundle(const QString& bundle, const char* script,
                                             const char* warning);
 
