@@ -104,9 +104,12 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
     // Forward selection: the sensor that most lowers the cross-validated RMS,
     // one at a time; then the simplest set nearly as good as the best.
     const InputSearch search(training, candidates, options_);
-    std::vector<std::vector<int>> sets;
-    std::vector<double> scores;
-    std::vector<bool> commonZero;
+    struct SensorSet {
+        std::vector<int> sensors;
+        SetScore score;
+        std::vector<int> tau_index;  ///< fitted on every training run
+    };
+    std::vector<SensorSet> sets;
     std::vector<int> chosen;
     const int largest = std::min(options_.max_sensors, int(candidates.size()));
     for (int size = 1; size <= largest; ++size) {
@@ -125,28 +128,27 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
         }
         if (bestSensor < 0) break;
         chosen.push_back(bestSensor);
+        std::vector<int> tauIndex = search.fitTaus(chosen, -1).first;
         // A further sensor lagged by the longest time constant searched acts
         // over the runs as a trend, which the runs cannot tell from a heat
         // path (a wandering bed thermometer fitted 0.02 µm of a noise-free
         // drift's misfit so): the search stops before it.
-        if (chosen.size() > 1 &&
-            search.fitTaus(chosen, -1).first.back() + 1 == int(search.grid().size()))
-            break;
-        sets.push_back(chosen);
-        scores.push_back(best.rms_um);
-        commonZero.push_back(best.commonZero);
+        if (chosen.size() > 1 && tauIndex.back() + 1 == int(search.grid().size())) break;
+        sets.push_back({chosen, best, std::move(tauIndex)});
     }
     // Each sensor adds three parameters, and opposed gains on correlated
     // sensors amplify their noise on motion the training runs did not show:
     // a further sensor must lower the cross-validated RMS by 10 %.
+    std::vector<double> scores;
+    for (const SensorSet& set : sets) scores.push_back(set.score.rms_um);
     const std::size_t pick = simplestNearBest(scores, 0.10);
     if (pick == scores.size())
         throw ModelError(
             QStringLiteral("model 'arx': the training runs are too few to "
                            "cross-validate any sensor set"));
 
-    const std::vector<int>& set = sets[pick];
-    const std::vector<int> index = search.fitTaus(set, -1).first;
+    const std::vector<int>& set = sets[pick].sensors;
+    const std::vector<int>& index = sets[pick].tau_index;
     inputs_.clear();
     for (std::size_t k = 0; k < set.size(); ++k)
         inputs_.push_back({candidates[set[k]], search.grid()[std::size_t(index[k])]});
@@ -166,7 +168,7 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
         positionDependent ? X : withRunZeros(X, runOfRow, int(training.size())), y);
     coefficients_ = fit.coefficients.head(X.cols());
     commonZero_um_ = 0;
-    if (!positionDependent && commonZero[pick])
+    if (!positionDependent && sets[pick].score.commonZero)
         commonZero_um_ = fit.coefficients.tail(Eigen::Index(training.size())).mean();
 
     const Eigen::Index m = 2 * Eigen::Index(inputs_.size());
@@ -203,7 +205,7 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
                 fit.coefficients[z], fit.sigma[z], QStringLiteral("µm")};
             variance += fit.sigma[z] * fit.sigma[z];
         }
-        if (commonZero[pick]) {
+        if (sets[pick].score.commonZero) {
             summary.parameters[QStringLiteral("c")] = {
                 commonZero_um_, std::sqrt(variance) / double(training.size()),
                 QStringLiteral("µm")};

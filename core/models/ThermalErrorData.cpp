@@ -44,6 +44,15 @@ void checkSampleTable(const Run& run) {
                     .arg(s.time_s.size()));
 }
 
+/// The median of a signal's samples in its first `window_s`: the zero of a
+/// rise or a drift, robust to a spike in the first sample.
+double firstWindowMedian(const Signal& s, double window_s) {
+    std::vector<double> window;
+    for (std::size_t i = 0; i < s.time_s.size() && s.time_s[i] <= s.time_s.front() + window_s; ++i)
+        window.push_back(s.value[i]);
+    return median(window);
+}
+
 /// The present samples of a column (NaN marks a missing sample).
 Signal presentSamples(const Run& run, const QString& column) {
     Signal signal;
@@ -91,11 +100,7 @@ TemperatureRise temperatureRise(const Run& run, const Channel& channel,
                         .arg(messageNumber(s.time_s.front()), messageNumber(gapLimit_s));
         return rise;
     }
-    std::vector<double> window;
-    for (std::size_t i = 0;
-         i < s.time_s.size() && s.time_s[i] <= s.time_s.front() + options.reference_window_s; ++i)
-        window.push_back(s.value[i]);
-    rise.reference_C = median(window);
+    rise.reference_C = firstWindowMedian(s, options.reference_window_s);
     for (double& v : s.value) v -= rise.reference_C;
     return rise;
 }
@@ -173,11 +178,7 @@ std::vector<ErrorObservation> driftErrors(const Run& run, const QString& channel
     // The drift's zero is the median of the first window, as a temperature
     // rise's is: a single first reading carries the probe's whole noise into
     // every later error of the run, as an offset no model can predict.
-    std::vector<double> window;
-    for (std::size_t i = 0;
-         i < s.time_s.size() && s.time_s[i] <= s.time_s.front() + referenceWindow_s; ++i)
-        window.push_back(s.value[i]);
-    const double reference_um = median(window);
+    const double reference_um = firstWindowMedian(s, referenceWindow_s);
     std::vector<ErrorObservation> observations;
     for (std::size_t i = 0; i < s.time_s.size(); ++i)
         observations.push_back(
