@@ -56,6 +56,7 @@ private:
     void warnOverrun(const QString& file, const Overrun& overrun);
     const Channel* sampleChannel(const CsvTable& csv, int column) const;
     void check(const CsvTable& csv, int column, const std::optional<QString>& why);
+    std::vector<int> formatColumns(const CsvTable& csv, const QStringList& expected);
     void reportProgress(const CsvTable& csv, double begin, double span);
 
     void readSamples();

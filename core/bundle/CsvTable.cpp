@@ -117,14 +117,11 @@ QString CsvTable::sameQuantityInAnotherUnit(const QString& name) const {
     return {};
 }
 
-std::vector<int> CsvTable::requireExactly(const QStringList& expected) const {
+std::vector<int> CsvTable::requireColumns(const QStringList& expected, QStringList& others) const {
     std::vector<int> indices;
     for (const QString& name : expected) indices.push_back(requireColumn(name));
-    for (std::size_t i = 0; i < m_header.size(); ++i)
-        if (!expected.contains(m_header[i]))
-            throw BundleException({m_fileName, 1, int(i) + 1,
-                                   QStringLiteral("unknown column '%1' (expected %2)")
-                                       .arg(m_header[i], expected.join(QLatin1Char(',')))});
+    for (const QString& name : m_header)
+        if (!expected.contains(name)) others << name;
     return indices;
 }
 

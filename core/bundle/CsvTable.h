@@ -36,9 +36,9 @@ public:
     int column(const QString& name) const;
     /// Index of a header column; throws naming the file if absent.
     int requireColumn(const QString& name) const;
-    /// The file must have exactly these columns, in any order: their indices;
-    /// throws naming a missing or an unknown column.
-    std::vector<int> requireExactly(const QStringList& expected) const;
+    /// The indices of these columns, in any order; throws naming a missing
+    /// one. The header's further columns go to `others`.
+    std::vector<int> requireColumns(const QStringList& expected, QStringList& others) const;
     /// True when the file is ';'-separated with decimal commas.
     bool europeanFormat() const { return m_delimiter == ';'; }
     /// How the file departs from plain ','-separated CSV, as a reader should

@@ -28,13 +28,25 @@ bool firstPassIsCycleOneAtTheStart(const Run& run) {
 
 using namespace bundle_files;
 
+/// The columns of a file of fixed format (motion.csv, positioning.csv), each
+/// required. A further column (an interferometer package's air and material
+/// temperatures, a comment) is merely unusual: ignored, with a warning.
+std::vector<int> BundleParser::formatColumns(const CsvTable& csv, const QStringList& expected) {
+    QStringList others;
+    std::vector<int> indices = csv.requireColumns(expected, others);
+    if (!others.isEmpty())
+        warnings << QStringLiteral("%1:1: column(s) %2 not part of the format (%3): ignored")
+                        .arg(csv.fileName(), quotedList(others), expected.join(QLatin1Char(',')));
+    return indices;
+}
+
 void BundleParser::readMotion() {
     const auto table = openCsv(kMotion);
     CsvTable& csv = *table;
     const QStringList expected{QStringLiteral("run"),   QStringLiteral("start_s"),
                                QStringLiteral("end_s"), QStringLiteral("from_mm"),
                                QStringLiteral("to_mm"), QStringLiteral("feed_mm_min")};
-    const std::vector<int> c = csv.requireExactly(expected);
+    const std::vector<int> c = formatColumns(csv, expected);
     Overrun overrun;
     while (csv.next()) {
         const std::size_t r = runOf(csv, c[0]);
@@ -70,7 +82,7 @@ void BundleParser::readPositioning() {
     const QStringList expected{QStringLiteral("run"),       QStringLiteral("time_s"),
                                QStringLiteral("cycle"),     QStringLiteral("target_mm"),
                                QStringLiteral("direction"), QStringLiteral("deviation_um")};
-    const std::vector<int> c = csv.requireExactly(expected);
+    const std::vector<int> c = formatColumns(csv, expected);
     Overrun overrun;
     QStringList otherSpellings;  // of a direction, as other software writes it
     int otherSpellingLine = 0;

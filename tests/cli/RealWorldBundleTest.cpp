@@ -2,7 +2,8 @@
 // every cell quoted, CRLF and a byte-order mark; a European spreadsheet export;
 // a tab-separated one with units in the header; two loggers merged row by row;
 // a run on a logger's clock; an interferometer's cycles counted from 1 with
-// arrows for directions; all of them at once with a hand-edited campaign.json.
+// arrows for directions; further columns beside the format's; all of them at
+// once with a hand-edited campaign.json.
 // Each must import through the real driftlab-cli and give the same campaign as
 // the plain example (archives and export: BundleArchiveExportTest.cpp).
 #include <gtest/gtest.h>
@@ -250,6 +251,54 @@ for row in rows[1:]:
 csv.writer(open(path, 'w', newline='')).writerows(rows)
 )";
     expectRewrittenImportsAsThePlainBundle(bundle, script, nullptr);
+}
+
+TEST(RealWorldBundle, furtherColumnsOfAnInterferometerExportAreIgnoredWithAWarning) {
+    // A laser package writes its environment sensors beside each reading, and
+    // a motion log may carry a comment: not part of the format, merely unusual
+    // (DESIGN.md §2). Before, the reader refused the whole bundle.
+    QTemporaryDir dir;
+    const QString bundle = dir.filePath(QStringLiteral("further"));
+    copyBundle(exampleBundlePath(), bundle);
+    const char* script = R"(
+import csv, sys
+d = sys.argv[1] + '/'
+rows = list(csv.reader(open(d + 'positioning.csv', newline='')))
+rows[0][4:4] = ['air_temp_C']
+rows[0] += ['material_temp_C', 'pressure_hPa']
+for i, row in enumerate(rows[1:]):
+    row[4:4] = ['%.2f' % (20.1 + 0.01 * (i % 7))]
+    row += ['%.2f' % (20.4 + 0.01 * (i % 5)), '1013.2']
+csv.writer(open(d + 'positioning.csv', 'w', newline='')).writerows(rows)
+rows = list(csv.reader(open(d + 'motion.csv', newline='')))
+rows[0] = ['comment'] + rows[0]
+for i, row in enumerate(rows[1:]):
+    row.insert(0, 'dwell, then reverse' if i % 2 else '')
+csv.writer(open(d + 'motion.csv', 'w', newline='')).writerows(rows)
+)";
+    expectRewrittenImportsAsThePlainBundle(
+        bundle, script,
+        "warning: positioning.csv:1: column(s) 'air_temp_C', 'material_temp_C', 'pressure_hPa' "
+        "not part of the format (run,time_s,cycle,target_mm,direction,deviation_um): ignored");
+    const BundleReadResult read = readBundle(bundle);
+    ASSERT_TRUE(read.ok());
+    EXPECT_TRUE(read.warnings.contains(
+        QStringLiteral("motion.csv:1: column(s) 'comment' not part of the format "
+                       "(run,start_s,end_s,from_mm,to_mm,feed_mm_min): ignored")))
+        << qPrintable(read.warnings.join(QLatin1Char('\n')));
+    // A required column still has to be there: one renamed is refused, named.
+    const QString renamed = dir.filePath(QStringLiteral("renamed"));
+    copyBundle(exampleBundlePath(), renamed);
+    runTool(QStringLiteral("python3"),
+            {QStringLiteral("-c"),
+             QStringLiteral("import sys; p = sys.argv[1] + '/positioning.csv'; "
+                            "t = open(p).read(); open(p, 'w').write(t.replace('deviation_um', "
+                            "'error_um', 1))"),
+             renamed});
+    const BundleReadResult refused = readBundle(renamed);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_TRUE(refused.error->message.contains(QStringLiteral("missing column 'deviation_um'")))
+        << qPrintable(refused.error->message);
 }
 
 TEST(RealWorldBundle, aForeignExportWithEveryQuirkAtOnceImportsAsThePlainBundle) {
