@@ -55,6 +55,7 @@ private:
     void checkPosition(const CsvTable& csv, int column, double position_mm, Overrun& overrun);
     void warnOverrun(const QString& file, const Overrun& overrun);
     const Channel* sampleChannel(const CsvTable& csv, int column) const;
+    static QString axisColumnOf(const QString& header);
     void check(const CsvTable& csv, int column, const std::optional<QString>& why);
     std::vector<int> formatColumns(const CsvTable& csv, const QStringList& expected);
     void reportProgress(const CsvTable& csv, double begin, double span);

@@ -9,6 +9,7 @@
 
 #include "core/bundle/BundleParser.h"
 #include "core/bundle/CampaignJson.h"
+#include "core/bundle/ColumnSpelling.h"
 #include "core/bundle/SampleRows.h"
 #include "core/bundle/ValueLimits.h"
 #include "core/domain/MessageText.h"
@@ -106,11 +107,12 @@ void BundleParser::warnOverrun(const QString& file, const Overrun& overrun) {
 }
 
 /// The declared channel of a samples.csv column, also under a header giving its unit
-/// ("T_nut [°C]", checked); nullptr for an axis column; throws for anything else.
+/// ("T_nut [°C]", checked); nullptr for an axis column (also spelled "Position [mm]");
+/// throws for anything else.
 const Channel* BundleParser::sampleChannel(const CsvTable& csv, int column) const {
     const QString& header = csv.header()[std::size_t(column)];
     if (const Channel* channel = m_campaign.findChannel(header)) return channel;
-    if (isAxisColumn(header)) return nullptr;
+    if (!axisColumnOf(header).isEmpty()) return nullptr;
     const std::optional<HeaderWithUnit> withUnit = splitHeaderUnit(header);
     const Channel* channel = withUnit ? m_campaign.findChannel(withUnit->id) : nullptr;
     if (!channel)
@@ -121,6 +123,14 @@ const Channel* BundleParser::sampleChannel(const CsvTable& csv, int column) cons
         throw BundleException(
             {kSamples, 1, column + 1, QStringLiteral("column '%1': %2").arg(header, *why)});
     return channel;
+}
+
+/// The axis column (position_mm, feed_mm_min, torque_Nm) a samples.csv header
+/// names, as the format spells it or as other software does; empty for none.
+QString BundleParser::axisColumnOf(const QString& header) {
+    for (const QString& axis : {kPositionColumn, kFeedColumn, kTorqueColumn})
+        if (spellsColumn(header, axis)) return axis;
+    return {};
 }
 
 void BundleParser::check(const CsvTable& csv, int column, const std::optional<QString>& why) {
@@ -142,7 +152,7 @@ void BundleParser::readSamples() {
     for (std::size_t i = 0; i < csv.header().size(); ++i) {
         if (int(i) == runCol || int(i) == timeCol) continue;
         const Channel* channel = sampleChannel(csv, int(i));
-        const QString name = channel ? channel->id : csv.header()[i];
+        const QString name = channel ? channel->id : axisColumnOf(csv.header()[i]);
         const auto& columns = m_campaign.sample_columns;
         if (std::find(columns.begin(), columns.end(), name) != columns.end())
             throw BundleException(

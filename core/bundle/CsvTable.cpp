@@ -1,9 +1,12 @@
 #include "core/bundle/CsvTable.h"
 
+#include "core/bundle/ColumnSpelling.h"
+
 #include <csv.h>
 #include <QDateTime>
 #include <QHash>
 #include <QIODevice>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -80,9 +83,16 @@ void CsvTable::ParserDeleter::operator()(csv_parser* parser) const {
 }
 
 int CsvTable::column(const QString& name) const {
-    for (std::size_t i = 0; i < m_header.size(); ++i)
-        if (m_header[i] == name) return int(i);
-    return -1;
+    int found = -1;
+    for (std::size_t i = 0; i < m_header.size(); ++i) {
+        if (!spellsColumn(m_header[i], name)) continue;
+        if (found >= 0)
+            throw BundleException({m_fileName, 1, int(i) + 1,
+                                   QStringLiteral("columns '%1' and '%2' both name '%3'")
+                                       .arg(m_header[std::size_t(found)], m_header[i], name)});
+        found = int(i);
+    }
+    return found;
 }
 
 int CsvTable::requireColumn(const QString& name) const {
@@ -96,23 +106,22 @@ int CsvTable::requireColumn(const QString& name) const {
 
 QString CsvTable::sameQuantityInAnotherUnit(const QString& name) const {
     // "deviation_um" is the quantity "deviation" in um: a header naming
-    // "deviation_mm" or a bare "deviation" is the column in another unit, or
-    // with none.
-    const qsizetype cut = name.lastIndexOf(QLatin1Char('_'));
-    if (cut <= 0) return {};
-    const QString stem = name.left(cut), unit = name.mid(cut + 1);
+    // "deviation_mm", "deviation [mm]" or a bare "deviation" is the column in
+    // another unit, or with none.
+    const QString stem = name.left(name.indexOf(QLatin1Char('_')));
+    const QString unit = name.mid(stem.size() + 1);
     for (const QString& h : m_header) {
-        if (h.compare(stem, Qt::CaseInsensitive) == 0)
+        const std::optional<QString> other = otherUnitOf(h, name);
+        if (!other) continue;
+        if (other->isEmpty())
             return QStringLiteral(
                        ": it has '%1', without its unit (DriftLab reads %2 in %3: "
                        "name it '%4' if it is in %3)")
                 .arg(h, stem, unit, name);
-        if (h.startsWith(stem + QLatin1Char('_'), Qt::CaseInsensitive) &&
-            !h.mid(cut + 1).contains(QLatin1Char('_')))
-            return QStringLiteral(
-                       ": it has '%1', in %2 (DriftLab reads %3 in %4: convert the "
-                       "column and name it '%5')")
-                .arg(h, h.mid(cut + 1), stem, unit, name);
+        return QStringLiteral(
+                   ": it has '%1', in %2 (DriftLab reads %3 in %4: convert the "
+                   "column and name it '%5')")
+            .arg(h, *other, stem, unit, name);
     }
     return {};
 }
@@ -120,8 +129,9 @@ QString CsvTable::sameQuantityInAnotherUnit(const QString& name) const {
 std::vector<int> CsvTable::requireColumns(const QStringList& expected, QStringList& others) const {
     std::vector<int> indices;
     for (const QString& name : expected) indices.push_back(requireColumn(name));
-    for (const QString& name : m_header)
-        if (!expected.contains(name)) others << name;
+    for (std::size_t i = 0; i < m_header.size(); ++i)
+        if (std::find(indices.begin(), indices.end(), int(i)) == indices.end())
+            others << m_header[i];
     return indices;
 }
 

@@ -32,7 +32,9 @@ public:
 
     const QString& fileName() const { return m_fileName; }
     const std::vector<QString>& header() const { return m_header; }
-    /// Index of a header column, or -1.
+    /// Index of a header column, or -1. A format column (time_s) is also
+    /// found as other software spells it ("Time [s]": ColumnSpelling.h);
+    /// throws when two columns name it.
     int column(const QString& name) const;
     /// Index of a header column; throws naming the file if absent.
     int requireColumn(const QString& name) const;

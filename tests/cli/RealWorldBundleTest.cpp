@@ -2,8 +2,9 @@
 // every cell quoted, CRLF and a byte-order mark; a European spreadsheet export;
 // a tab-separated one with units in the header; two loggers merged row by row;
 // a run on a logger's clock; an interferometer's cycles counted from 1 with
-// arrows for directions; further columns beside the format's; all of them at
-// once with a hand-edited campaign.json.
+// arrows for directions; further columns beside the format's; its columns
+// capitalised, with units in brackets; all of them at once with a hand-edited
+// campaign.json.
 // Each must import through the real driftlab-cli and give the same campaign as
 // the plain example (archives and export: BundleArchiveExportTest.cpp).
 #include <gtest/gtest.h>
@@ -299,6 +300,35 @@ csv.writer(open(d + 'motion.csv', 'w', newline='')).writerows(rows)
     ASSERT_FALSE(refused.ok());
     EXPECT_TRUE(refused.error->message.contains(QStringLiteral("missing column 'deviation_um'")))
         << qPrintable(refused.error->message);
+}
+
+TEST(RealWorldBundle, formatColumnsCapitalisedAndWithTheirUnitInBracketsAreTheFormatsOwn) {
+    // Loggers and laser packages write "Time [s]", "Deviation (µm)": the
+    // format's columns, once the unit is the format's. Before, every file was
+    // refused for a "missing column 'time_s'".
+    QTemporaryDir dir;
+    const QString bundle = dir.filePath(QStringLiteral("spelled"));
+    copyBundle(exampleBundlePath(), bundle);
+    const char* script = R"(
+import sys
+d = sys.argv[1] + '/'
+headers = {
+    'samples.csv': {'run': 'Run', 'time_s': 'Time [s]', 'position_mm': 'Position [mm]',
+                    'feed_mm_min': 'Feed (mm/min)', 'torque_Nm': 'Torque [N\u00b7m]'},
+    'positioning.csv': {'run': 'RUN', 'time_s': 'Time (s)', 'cycle': 'Cycle',
+                        'target_mm': 'Target [mm]', 'direction': 'Direction',
+                        'deviation_um': 'Deviation [\u00b5m]'},
+    'motion.csv': {'start_s': 'Start [sec]', 'end_s': 'END_S', 'from_mm': 'From [mm]',
+                   'to_mm': 'To [mm]', 'feed_mm_min': 'Feed [mm/min]'},
+}
+for name, spelled in headers.items():
+    lines = open(d + name, encoding='utf-8').read().split('\n')
+    lines[0] = ','.join(spelled.get(h, h) for h in lines[0].split(','))
+    open(d + name, 'w', encoding='utf-8').write('\n'.join(lines))
+)";
+    expectRewrittenImportsAsThePlainBundle(bundle, script, nullptr);
+    EXPECT_TRUE(readFile(QDir(bundle).filePath(QStringLiteral("positioning.csv")))
+                    .startsWith("RUN,Time (s),Cycle,Target [mm],Direction,Deviation [\xC2\xB5m]"));
 }
 
 TEST(RealWorldBundle, aForeignExportWithEveryQuirkAtOnceImportsAsThePlainBundle) {

@@ -153,6 +153,18 @@ const std::vector<BadBundleCase>& badBundleCases() {
              replaceInFile(file(d, "samples.csv"), "run,time_s,", "run,time,");
          },
          "samples.csv:1", "missing column 'time_s' in header: it has 'time', without its unit"},
+        {"deviation_in_mm_by_a_bracketed_unit",
+         [=](const QString& d) {
+             replaceInFile(file(d, "positioning.csv"), "deviation_um", "Deviation [mm]");
+         },
+         "positioning.csv:1",
+         "missing column 'deviation_um' in header: it has 'Deviation [mm]', in mm (DriftLab reads "
+         "deviation in um: convert the column and name it 'deviation_um')"},
+        {"two_columns_naming_the_time",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "run,time_s,T_nut,", "run,time_s,Time [s],");
+         },
+         "samples.csv:1:3", "columns 'time_s' and 'Time [s]' both name 'time_s'"},
         {"number_in_quotes",
          [=](const QString& d) {
              replaceInFile(file(d, "campaign.json"), "\"lead_mm\": 10", "\"lead_mm\": \"10\"");
