@@ -8,8 +8,9 @@
 //                                               an empty cell: the air of the row before
 //   material_C                                  optional, carried only
 //
-// Vendor exports name and scale their columns differently: rename them to this
-// layout. Whether the interferometer compensated itself is not in the file (no
+// A column is also found capitalised and with its unit in brackets ("Air [°C]",
+// "Humidity [%]": core/bundle/ColumnSpelling.h). Vendor exports that name or
+// scale their columns otherwise: rename them to this layout. Whether the interferometer compensated itself is not in the file (no
 // export states it the same way): the caller says it, as in the stream's
 // header. Rows go through the stream's parser, so the same checks apply, and
 // an error names the file, line and column.

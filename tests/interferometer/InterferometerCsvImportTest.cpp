@@ -49,6 +49,27 @@ TEST(InterferometerCsvImport, correctsEachRowWithTheAirOfItsRowOrTheRowBefore) {
         << imported.correction.toStdString();
 }
 
+TEST(InterferometerCsvImport, columnsAsAVendorSpellsThemWithTheirUnitsAreTheLayoutsOwn) {
+    // Capitalised, units in brackets: "Air [°C]" is air_C, "Humidity [%]" is
+    // humidity_pct; the readings are those of the generic spelling.
+    QTemporaryDir dir;
+    const QByteArray rows = "0,0,0,20.5,101000,40\n100,1,1.5,21.5,100500,45\n";
+    const QString plain =
+        writeCsv(dir, "position_mm,time_s,deviation_um,air_C,pressure_Pa,humidity_pct\n" + rows);
+    const InterferometerCsvImport expected = importInterferometerCsv(plain, off());
+    const QString spelled = writeCsv(dir,
+                                     "Position [mm],Time (s),Deviation [\xC2\xB5m],Air [\xC2\xB0"
+                                     "C],Pressure [Pa],Humidity [%]\n" +
+                                         rows);
+    const InterferometerCsvImport imported = importInterferometerCsv(spelled, off());
+    ASSERT_FALSE(imported.error) << imported.error->toString().toStdString();
+    ASSERT_EQ(imported.readings.size(), 2u);
+    EXPECT_EQ(imported.readings[1].deviation_um, expected.readings[1].deviation_um);
+    EXPECT_EQ(imported.readings[1].position_mm, expected.readings[1].position_mm);
+    EXPECT_EQ(imported.correction, expected.correction);
+    EXPECT_NE(imported.readings[1].deviation_um, 1.5);  // the air was read and corrected for
+}
+
 TEST(InterferometerCsvImport, compensatedExportNeedsNoAir) {
     QTemporaryDir dir;
     const QString path = writeCsv(dir, "time_s,position_mm,deviation_um\n0,0,0\n1,100,1.5\n");
