@@ -10,10 +10,11 @@
 //
 // A column is also found capitalised and with its unit in brackets ("Air [°C]",
 // "Humidity [%]": core/bundle/ColumnSpelling.h). Vendor exports that name or
-// scale their columns otherwise: rename them to this layout. Whether the interferometer compensated itself is not in the file (no
-// export states it the same way): the caller says it, as in the stream's
-// header. Rows go through the stream's parser, so the same checks apply, and
-// an error names the file, line and column.
+// scale their columns otherwise: rename them to this layout. Whether the
+// interferometer compensated itself is not in the file (no export states it
+// the same way): the caller says it, as in the stream's header. Rows go
+// through the stream's parser, so the same checks apply, and an error names
+// the file, line and column.
 
 #include <QString>
 #include <optional>
