@@ -18,20 +18,18 @@ namespace {
 /// and a part that heats from the run's first second would otherwise start
 /// its lagged node half a window's rise away from it.
 double riseAtStart(const Signal& rise, double window_s) {
-    double n = 0, t = 0, v = 0, tt = 0, tv = 0;
-    for (std::size_t i = 0; i < rise.time_s.size(); ++i) {
-        const double dt = rise.time_s[i] - rise.time_s.front();
-        if (dt > window_s) break;
-        n += 1;
-        t += dt;
-        v += rise.value[i];
-        tt += dt * dt;
-        tv += dt * rise.value[i];
-    }
-    const double spread = n * tt - t * t;
-    if (n < 3 || !(spread > 0)) return rise.value.front();
-    const double slope = (n * tv - t * v) / spread;
-    return (v - slope * t) / n;
+    Eigen::Index n = 0;
+    while (std::size_t(n) < rise.time_s.size() &&
+           rise.time_s[std::size_t(n)] - rise.time_s.front() <= window_s)
+        ++n;
+    if (n < 3) return rise.value.front();
+    Eigen::MatrixXd X(n, 2);
+    X.col(0).setOnes();
+    for (Eigen::Index i = 0; i < n; ++i)
+        X(i, 1) = rise.time_s[std::size_t(i)] - rise.time_s.front();
+    const LeastSquaresFit line =
+        solveLeastSquares(X, Eigen::Map<const Eigen::VectorXd>(rise.value.data(), n));
+    return line.full_rank ? line.coefficients[0] : rise.value.front();
 }
 
 }  // namespace
