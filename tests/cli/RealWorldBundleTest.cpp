@@ -287,19 +287,6 @@ csv.writer(open(d + 'motion.csv', 'w', newline='')).writerows(rows)
         QStringLiteral("motion.csv:1: column(s) 'comment' not part of the format "
                        "(run,start_s,end_s,from_mm,to_mm,feed_mm_min): ignored")))
         << qPrintable(read.warnings.join(QLatin1Char('\n')));
-    // A required column still has to be there: one renamed is refused, named.
-    const QString renamed = dir.filePath(QStringLiteral("renamed"));
-    copyBundle(exampleBundlePath(), renamed);
-    runTool(QStringLiteral("python3"),
-            {QStringLiteral("-c"),
-             QStringLiteral("import sys; p = sys.argv[1] + '/positioning.csv'; "
-                            "t = open(p).read(); open(p, 'w').write(t.replace('deviation_um', "
-                            "'error_um', 1))"),
-             renamed});
-    const BundleReadResult refused = readBundle(renamed);
-    ASSERT_FALSE(refused.ok());
-    EXPECT_TRUE(refused.error->message.contains(QStringLiteral("missing column 'deviation_um'")))
-        << qPrintable(refused.error->message);
 }
 
 TEST(RealWorldBundle, formatColumnsCapitalisedAndWithTheirUnitInBracketsAreTheFormatsOwn) {

@@ -153,6 +153,11 @@ const std::vector<BadBundleCase>& badBundleCases() {
              replaceInFile(file(d, "samples.csv"), "run,time_s,", "run,time,");
          },
          "samples.csv:1", "missing column 'time_s' in header: it has 'time', without its unit"},
+        {"deviation_renamed",  // further columns are ignored, a required one must be there
+         [=](const QString& d) {
+             replaceInFile(file(d, "positioning.csv"), "deviation_um", "error_um");
+         },
+         "positioning.csv:1", "missing column 'deviation_um' in header"},
         {"deviation_in_mm_by_a_bracketed_unit",
          [=](const QString& d) {
              replaceInFile(file(d, "positioning.csv"), "deviation_um", "Deviation [mm]");
