@@ -241,16 +241,22 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
             adopted = adoptedStepBase({first->effect}, *first);
             // Step 2: what else helped on the held-out runs in step 1 (another
             // effect may show only once the first is accounted for), tested
-            // again on what the cause leaves, from its own step-1 values.
-            if (!leavesOnlyNoise(adopted->test_summary, result.base_test,
-                                 options.max_residual_over_noise)) {
+            // again on what the cause leaves, from its own step-1 values;
+            // unless the cause leaves only noise by the noise-level test (the
+            // verdict's 2× would end the search above a second effect).
+            if (!leavesOnlyNoise(adopted->test_summary, result.base_test, kNoiseLevelTolerance)) {
                 // The lags of sensors the cause reads first: their fits are the
                 // longest, and the other worker takes the rest meanwhile.
                 std::vector<std::pair<CandidateEffect, std::vector<double>>> rest;
                 for (const auto& c : onTopOfOthers)
                     if (c.on_top_of == first->cause) rest.push_back({c, {}});
                 for (const auto& f : result.findings) {
-                    if (!(f.gain.reduction > 0) || f.cause == first->cause) continue;
+                    // An effect on the axis that the training runs show may be
+                    // masked on the held-out runs by the first cause's larger error.
+                    const bool axisEffectOnTraining =
+                        f.effect.channel.isEmpty() && f.bic_drop > options.min_bic_drop;
+                    if (!(f.gain.reduction > 0 || axisEffectOnTraining) || f.cause == first->cause)
+                        continue;
                     std::vector<double> own;
                     for (const auto& p : f.parameters) own.push_back(p.second.value);
                     rest.push_back({f.effect, own});
@@ -272,8 +278,13 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
             adopted ? 1 - adopted->test_summary.error_rms_um /
                               std::max(result.base_test.error_rms_um, 1e-12)
                     : 0;
+        // Near the noise 1 − after/before understates what a cause explains:
+        // the noise stays in both. The structure's own RMS, the noise taken
+        // out of both, is what "most of the structure" is read on.
         const double explained =
-            adopted ? std::max(first->gain.reduction, positioningExplained) : 0;
+            adopted ? std::max({first->gain.reduction, positioningExplained,
+                                structureRmsExplained(result.base_test, adopted->test_summary)})
+                    : 0;
         const bool named = adopted && (explained >= options.min_explained ||
                                        leavesOnlyNoise(adopted->test_summary, result.base_test,
                                                        options.max_residual_over_noise));

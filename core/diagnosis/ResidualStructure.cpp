@@ -95,6 +95,11 @@ double structureExplained(const ResidualSummary& before, const ResidualSummary& 
     return std::clamp(explained2 / structure2, 0.0, 1.0);
 }
 
+double structureRmsExplained(const ResidualSummary& before, const ResidualSummary& after) {
+    if (!(before.error_rms_um > kNoiseLevelTolerance * after.error_noise_um)) return 0;
+    return 1 - std::sqrt(1 - structureExplained(before, after));
+}
+
 ResidualSummary summarise(const std::vector<models::ReadingResiduals>& residuals,
                           const std::vector<models::RunData>& runs) {
     ResidualSummary s;

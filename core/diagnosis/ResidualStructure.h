@@ -48,6 +48,13 @@ struct ResidualSummary {
 /// noise level in positioning (kNoiseLevelTolerance: a sensor's effect).
 double structureExplained(const ResidualSummary& before, const ResidualSummary& after);
 
+/// How much of the positioning structure's RMS a model removes, the reading
+/// noise taken out of before and after: 1 − √((after² − noise²) / (before² −
+/// noise²)), read on the same scale as 1 − after/before, which near the noise
+/// understates it (the noise stays in both). 0 when `before` is at noise level
+/// in positioning: there is no positioning structure (a sensor's effect).
+double structureRmsExplained(const ResidualSummary& before, const ResidualSummary& after);
+
 ResidualSummary summarise(const std::vector<models::ReadingResiduals>& residuals,
                           const std::vector<models::RunData>& runs);
 

@@ -124,6 +124,34 @@ TEST(IndependentSimulator, diagnosisOnCampaignsItDidNotWrite) {
     EXPECT_GE(double(correct), kIndependentFloor * double(cases.size()));
 }
 
+TEST(IndependentSimulator, otherDrawsCausesNearTheNoiseAndOneMaskedByTheFirstAreNamed) {
+    // Other machines and noise of the simulator (seed offsets 61 and 71),
+    // where the rig's naming rules once fell short:
+    // - motor heat leaving the noise but 0.08 µm (0.63 → 0.34 µm against 0.33
+    //   µm) was `unexplained`: 1 − after/before read 46 %, though 85 % of the
+    //   structure's RMS was gone;
+    // - frame growth leaving 1.8× the noise ended the search, as "only
+    //   noise", before the forced convection beneath it (and nut heat leaving
+    //   1.6× before refraction);
+    // - refraction lowered the held-out error by nothing (−9 %) beside the
+    //   nut's larger heat in step 1, though the training runs showed it
+    //   (ΔBIC 955), and was not tried again on top of the nut heat.
+    const QDir draws(QStringLiteral(DRIFTLAB_INDEPENDENT_DRAWS));
+    int bundles = 0;
+    for (const QString& draw : {QStringLiteral("o61"), QStringLiteral("o71")}) {
+        const QDir suite(draws.filePath(draw));
+        for (const Case& c : manifest(suite)) {
+            const Outcome o = diagnoseBundle(suite.filePath(c.bundle), c.expected);
+            std::cout << qPrintable(draw) << " " << qPrintable(c.bundle) << ": "
+                      << qPrintable(o.verdict) << "\n";
+            EXPECT_EQ(o.verdict, c.expected) << qPrintable(draw + QLatin1Char(' ') + c.bundle)
+                                             << "\n        " << qPrintable(o.detail);
+            ++bundles;
+        }
+    }
+    EXPECT_EQ(bundles, 4) << "the draws are written by independent_draw61/71_generate";
+}
+
 TEST(IndependentSimulator, aLoggerReadingEveryFiveMinutesGetsTheSameVerdicts) {
     // The same campaigns with samples.csv thinned by Python to one row per run
     // every 300 s, as a slow data logger writes them: the interpolation must

@@ -123,3 +123,26 @@ TEST(StructureExplained, isTheShareOfTheMeanSquareAboveTheNoise) {
     after.error_rms_um = 1.5;
     EXPECT_DOUBLE_EQ(diagnosis::structureExplained(before, after), 1);
 }
+
+TEST(StructureExplained, itsRmsIsReadWithTheNoiseTakenOutOfBeforeAndAfter) {
+    // 0.63 µm RMS before, 0.33 µm reading noise, 0.34 µm left (the motor heat
+    // of an independent campaign): 1 − after/before says 46 %, yet what is
+    // left is the noise but 0.08 µm, and the structure's RMS (0.54 µm) is
+    // 85 % gone.
+    diagnosis::ResidualSummary before, after;
+    before.error_rms_um = 0.63;
+    after.error_noise_um = 0.33;
+    after.error_rms_um = 0.34;
+    const double structure = std::sqrt(0.63 * 0.63 - 0.33 * 0.33);
+    const double left = std::sqrt(0.34 * 0.34 - 0.33 * 0.33);
+    EXPECT_NEAR(diagnosis::structureRmsExplained(before, after), 1 - left / structure, 1e-12);
+    EXPECT_NEAR(diagnosis::structureRmsExplained(before, after), 0.85, 0.01);
+    // Far above the noise it is 1 − after/before.
+    before.error_rms_um = 300;
+    after.error_rms_um = 120;
+    EXPECT_NEAR(diagnosis::structureRmsExplained(before, after), 0.6, 1e-5);
+    after.error_rms_um = 0.2;  // below the noise: all of it
+    EXPECT_DOUBLE_EQ(diagnosis::structureRmsExplained(before, after), 1);
+    before.error_rms_um = 0.45;  // the base at noise level: no structure to read
+    EXPECT_DOUBLE_EQ(diagnosis::structureRmsExplained(before, after), 0);
+}
