@@ -273,22 +273,21 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
             }
         }
         // Named when the causes explain most of the discrepancy, or all of it
-        // but noise; part of it is not a cause found.
-        const double positioningExplained =
-            adopted ? 1 - adopted->test_summary.error_rms_um /
-                              std::max(result.base_test.error_rms_um, 1e-12)
-                    : 0;
-        // Near the noise 1 − after/before understates what a cause explains:
-        // the noise stays in both. The structure's own RMS, the noise taken
-        // out of both, is what "most of the structure" is read on.
+        // but noise; part of it is not a cause found. On positioning "most"
+        // is read on the structure's RMS, the noise taken out of before and
+        // after: 1 − after/before, which keeps the noise in both, is never
+        // above it where there is positioning structure.
         const double explained =
-            adopted ? std::max({first->gain.reduction, positioningExplained,
-                                structureRmsExplained(result.base_test, adopted->test_summary)})
+            adopted ? std::max(first->gain.reduction,
+                               structureRmsExplained(result.base_test, adopted->test_summary))
                     : 0;
         const bool named = adopted && (explained >= options.min_explained ||
                                        leavesOnlyNoise(adopted->test_summary, result.base_test,
                                                        options.max_residual_over_noise));
         if (named) {
+            const double positioningExplained =
+                1 - adopted->test_summary.error_rms_um /
+                        std::max(result.base_test.error_rms_um, 1e-12);
             result.verdict = causes.front();
             result.causes = causes;
             // What the causes leave above the noise is a cause outside the
