@@ -286,8 +286,8 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
                                                        options.max_residual_over_noise));
         if (named) {
             const double positioningExplained =
-                1 - adopted->test_summary.error_rms_um /
-                        std::max(result.base_test.error_rms_um, 1e-12);
+                1 -
+                adopted->test_summary.error_rms_um / std::max(result.base_test.error_rms_um, 1e-12);
             result.verdict = causes.front();
             result.causes = causes;
             // What the causes leave above the noise is a cause outside the
