@@ -114,6 +114,19 @@ std::vector<Finding> testCandidates(
     for (auto& f : scored)
         if (f) findings.push_back(std::move(*f));  // none: an extension the data cannot carry
     rank(findings, base.test);
+    // Held-out runs at other speeds can show a speed law that training runs
+    // at close speeds cannot: their jackknife is then the evidence.
+    for (Finding& f : findings)
+        if (!f.significant && f.effect.channel.isEmpty() && f.bic_drop > 0 &&
+            f.gain.reduction >= data.options.min_explained &&
+            f.confidence >= data.options.min_held_out_confidence) {
+            f.significant = true;
+            f.evidence += QStringLiteral(
+                              "; the training runs hardly show it (ΔBIC %1), the held-out "
+                              "runs do (confidence %2)")
+                              .arg(f.bic_drop, 0, 'f', 0)
+                              .arg(f.confidence, 0, 'f', 3);
+        }
     return findings;
 }
 
@@ -230,10 +243,14 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
                 onTopOfOthers.push_back(c);
         }
         result.findings = testCandidates(step1, candidates, 1, data, &done, 0, 0.7);
-        // Nothing is named on a base model that already fits to the noise.
-        const Finding* first = result.base_test.atNoiseLevel()
-                                   ? nullptr
-                                   : bestSignificant(result.findings, step1.test);
+        // Nothing is named on a base model that already fits to the noise,
+        // unless the held-out stretches show beyond doubt that part of it is
+        // a candidate's effect: a noise estimate is a summary, the stretches
+        // test each candidate's gain directly.
+        const Finding* first = bestSignificant(result.findings, step1.test);
+        if (first && result.base_test.atNoiseLevel() &&
+            first->confidence < options.min_confidence_at_noise)
+            first = nullptr;
         QStringList causes;
         std::optional<StepBase> adopted;
         if (first) {

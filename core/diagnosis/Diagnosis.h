@@ -36,6 +36,17 @@ struct DiagnosisOptions {
     /// A second cause is named on top of the first when it removes at least
     /// this share of what the first one leaves.
     double min_second_gain = 0.2;
+    /// On a base model that fits to the noise (kNoiseLevelTolerance) a cause
+    /// is named only with at least this confidence: the held-out stretches
+    /// then show that part of what the noise estimate took for noise is its
+    /// effect (a refraction of 0.7 µm against 0.5 µm of reading noise).
+    double min_confidence_at_noise = 0.9;
+    /// An effect on the axis that the training runs do not contradict (ΔBIC
+    /// above 0, below min_bic_drop) is significant all the same when it
+    /// removes min_explained of the held-out residual with at least this
+    /// confidence: held-out runs at other speeds can show a speed law that
+    /// training runs at two close speeds cannot (nut heat, n = 0.75).
+    double min_held_out_confidence = 0.99;
     std::function<bool(double fraction)> progress;  ///< false cancels
 };
 

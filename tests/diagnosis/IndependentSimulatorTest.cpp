@@ -135,7 +135,14 @@ TEST(IndependentSimulator, otherDrawsCausesNearTheNoiseAndOneMaskedByTheFirstAre
     //   1.6× before refraction);
     // - refraction lowered the held-out error by nothing (−9 %) beside the
     //   nut's larger heat in step 1, though the training runs showed it
-    //   (ΔBIC 955), and was not tried again on top of the nut heat.
+    //   (ΔBIC 955), and was not tried again on top of the nut heat;
+    // - refraction of 0.86 µm left the base model at 1.50× the reading noise
+    //   and was `none`, though it took the held-out residual to the noise
+    //   with confidence 0.9997;
+    // - nut heat with n = 0.75, trained at 3 and 4.5 m/min and held out at 8
+    //   and 12 m/min, took the held-out residual from 1.90 to 0.48 µm with
+    //   confidence 1 and was `unexplained`: two close training speeds could
+    //   not show the speed law (ΔBIC 5).
     const QDir draws(QStringLiteral(DRIFTLAB_INDEPENDENT_DRAWS));
     int bundles = 0;
     for (const QString& draw : {QStringLiteral("o61"), QStringLiteral("o71")}) {
@@ -149,7 +156,7 @@ TEST(IndependentSimulator, otherDrawsCausesNearTheNoiseAndOneMaskedByTheFirstAre
             ++bundles;
         }
     }
-    EXPECT_EQ(bundles, 4) << "the draws are written by independent_draw61/71_generate";
+    EXPECT_EQ(bundles, 6) << "the draws are written by independent_draw61/71_generate";
 }
 
 TEST(IndependentSimulator, aLoggerReadingEveryFiveMinutesGetsTheSameVerdicts) {
