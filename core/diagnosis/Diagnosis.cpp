@@ -347,10 +347,14 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
             result.verdict_evidence =
                 QStringLiteral(
                     "structure remains that no candidate explains: %1; positioning "
-                    "residual %2 µm RMS against %3 µm reading noise")
+                    "residual %2 µm RMS against %3 µm reading noise; worst temperature "
+                    "residual %4 K RMS on %5 against %6 K sensor noise")
                     .arg(describeStructure(result.base_residuals, test.runs))
                     .arg(result.base_test.error_rms_um, 0, 'f', 2)
-                    .arg(result.base_test.error_noise_um, 0, 'f', 2);
+                    .arg(result.base_test.error_noise_um, 0, 'f', 2)
+                    .arg(result.base_test.worst_channel_rms_K, 0, 'f', 3)
+                    .arg(result.base_test.worst_channel)
+                    .arg(result.base_test.worst_channel_noise_K, 0, 'f', 3);
             if (adopted)
                 result.verdict_evidence +=
                     QStringLiteral(
