@@ -69,6 +69,24 @@ void rank(std::vector<Finding>& findings, const std::vector<models::ReadingResid
     }
 }
 
+/// An effect on the axis that the training runs do not contradict is
+/// significant by its confidence, once ranked: held-out runs at other speeds
+/// can show a speed law that training runs at close speeds cannot
+/// (DiagnosisOptions::min_held_out_confidence).
+void admitHeldOutEvidence(std::vector<Finding>& findings, const DiagnosisOptions& options) {
+    for (Finding& f : findings)
+        if (!f.significant && f.effect.channel.isEmpty() && f.bic_drop > 0 &&
+            f.gain.reduction >= options.min_explained &&
+            f.confidence >= options.min_held_out_confidence) {
+            f.significant = true;
+            f.evidence += QStringLiteral(
+                              "; the training runs hardly show it (ΔBIC %1), the held-out "
+                              "runs do (confidence %2)")
+                              .arg(f.bic_drop, 0, 'f', 0)
+                              .arg(f.confidence, 0, 'f', 3);
+        }
+}
+
 /// The significant finding with the largest gain, or nullptr.
 const Finding* bestSignificant(const std::vector<Finding>& findings,
                                const std::vector<models::ReadingResiduals>& before) {
@@ -114,19 +132,7 @@ std::vector<Finding> testCandidates(
     for (auto& f : scored)
         if (f) findings.push_back(std::move(*f));  // none: an extension the data cannot carry
     rank(findings, base.test);
-    // Held-out runs at other speeds can show a speed law that training runs
-    // at close speeds cannot: their jackknife is then the evidence.
-    for (Finding& f : findings)
-        if (!f.significant && f.effect.channel.isEmpty() && f.bic_drop > 0 &&
-            f.gain.reduction >= data.options.min_explained &&
-            f.confidence >= data.options.min_held_out_confidence) {
-            f.significant = true;
-            f.evidence += QStringLiteral(
-                              "; the training runs hardly show it (ΔBIC %1), the held-out "
-                              "runs do (confidence %2)")
-                              .arg(f.bic_drop, 0, 'f', 0)
-                              .arg(f.confidence, 0, 'f', 3);
-        }
+    admitHeldOutEvidence(findings, data.options);
     return findings;
 }
 

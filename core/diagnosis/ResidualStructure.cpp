@@ -25,6 +25,12 @@ double upperMedian(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
+// A base residual within the noise level has no positioning structure to
+// explain (a sensor's effect): its share would be a ratio of noise.
+bool hasPositioningStructure(const ResidualSummary& before, const ResidualSummary& after) {
+    return before.error_rms_um > kNoiseLevelTolerance * after.error_noise_um;
+}
+
 }  // namespace
 
 double positioningNoise_um(const std::vector<models::RunData>& runs) {
@@ -85,9 +91,7 @@ bool ResidualSummary::atNoiseLevel(double tolerance) const {
 }
 
 double structureExplained(const ResidualSummary& before, const ResidualSummary& after) {
-    // A base residual within the noise level has no positioning structure to
-    // explain (a sensor's effect): its share would be a ratio of noise.
-    if (!(before.error_rms_um > kNoiseLevelTolerance * after.error_noise_um)) return 1;
+    if (!hasPositioningStructure(before, after)) return 1;
     const double structure2 =
         before.error_rms_um * before.error_rms_um - after.error_noise_um * after.error_noise_um;
     const double explained2 =
@@ -96,7 +100,7 @@ double structureExplained(const ResidualSummary& before, const ResidualSummary& 
 }
 
 double structureRmsExplained(const ResidualSummary& before, const ResidualSummary& after) {
-    if (!(before.error_rms_um > kNoiseLevelTolerance * after.error_noise_um)) return 0;
+    if (!hasPositioningStructure(before, after)) return 0;
     return 1 - std::sqrt(1 - structureExplained(before, after));
 }
 
