@@ -87,6 +87,10 @@ physics::ScrewThermalParameters HeatTransferModel::parametersWith(const double* 
     return p;
 }
 
+ScrewRunInputs HeatTransferModel::prepared(const RunData& run) const {
+    return prepareScrewRun(run, options_.dt_s, name(), options_.room, options_.cells);
+}
+
 std::optional<physics::ScrewThermalParameters> HeatTransferModel::fittedScrew(const RunData& run,
                                                                               QString* why) const {
     const QString problem =
@@ -115,8 +119,7 @@ ScrewRunOutputs HeatTransferModel::simulateWith(const double* values, const RunD
 
 Eigen::VectorXd HeatTransferModel::predictRun(const RunData& run,
                                               const std::vector<PredictionPoint>& at) const {
-    const auto out = simulateWith(values_.data(), run,
-                                  prepareScrewRun(run, options_.dt_s, name(), options_.room), at);
+    const auto out = simulateWith(values_.data(), run, prepared(run), at);
     return Eigen::Map<const Eigen::VectorXd>(out.error_um.data(),
                                              Eigen::Index(out.error_um.size()));
 }
@@ -153,7 +156,7 @@ double HeatTransferModel::cost(const std::vector<double>& values,
     double sum = 0;
     std::vector<double> r;
     for (const RunData& run : runs) {
-        const ScrewRunInputs inputs = prepareScrewRun(run, options_.dt_s, name(), options_.room);
+        const ScrewRunInputs inputs = prepared(run);
         r.resize(readingCount(run, inputs));
         writeResiduals(values.data(), run, inputs, options_.huber_sigmas, r.data());
         for (double v : r) sum += v * v / 2;
@@ -163,7 +166,7 @@ double HeatTransferModel::cost(const std::vector<double>& values,
 
 ReadingResiduals HeatTransferModel::residuals(const RunData& run) const {
     if (values_.empty()) throw ModelError(QStringLiteral("model '%1' is not fitted").arg(name()));
-    const ScrewRunInputs inputs = prepareScrewRun(run, options_.dt_s, name(), options_.room);
+    const ScrewRunInputs inputs = prepared(run);
     const std::size_t count = readingCount(run, inputs);
     std::vector<double> r(count);
     writeResiduals(values_.data(), run, inputs, INFINITY, r.data());
@@ -194,7 +197,7 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     int residualCount = 0;
     int temperatureCount = 0;
     for (const RunData& run : training) {
-        inputs.push_back(prepareScrewRun(run, options_.dt_s, name(), options_.room));
+        inputs.push_back(prepared(run));
         residualCount += int(run.observations.size());
         if (options_.fit_temperatures)
             for (const auto& s : inputs.back().sensors) temperatureCount += int(s.time_s.size());

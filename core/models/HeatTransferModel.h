@@ -108,6 +108,8 @@ private:
     std::size_t writeResiduals(const double* values, const RunData& run,
                                const ScrewRunInputs& inputs, double huberSigmas, double* out) const;
     physics::ScrewThermalParameters parametersWith(const double* values, const RunData& run) const;
+    /// The run prepared for this model's step, room and grid.
+    ScrewRunInputs prepared(const RunData& run) const;
     ScrewRunOutputs simulateWith(const double* values, const RunData& run,
                                  const ScrewRunInputs& inputs,
                                  const std::vector<PredictionPoint>& at) const;

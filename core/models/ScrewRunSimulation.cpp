@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 
 #include "core/models/DriveTorque.h"
 #include "core/models/ModelError.h"
@@ -40,7 +41,7 @@ physics::ScrewThermalParameters screwParameters(const RunData& run,
 }
 
 ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& model,
-                               RoomInput room) {
+                               RoomInput room, int cells) {
     if (!run.screw)
         throw ModelError(
             QStringLiteral("model '%1' simulates the screw; the campaign has none").arg(model));
@@ -60,6 +61,15 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
     }
 
     const auto steps = static_cast<std::size_t>(std::ceil(in.duration_s / dt_s - 1e-9));
+    if (cells > 0) {
+        try {
+            in.nut_path = std::make_shared<const physics::NutPath>(screwParameters(run, {}, cells),
+                                                                   in.motion, dt_s, steps);
+        } catch (const std::invalid_argument&) {
+            // Motion off the screw: each simulation refuses it at its step, as
+            // without a path.
+        }
+    }
 
     if (!run.torque_Nm.empty())
         in.mean_torque_squared_Nm2 = meanTorqueSquaredPerStep(run, in.motion, steps, dt_s);
@@ -134,12 +144,16 @@ ScrewRunOutputs simulateScrewRun(const ScrewRunInputs& in,
     physics::StepConditions step;
     step.motion = in.motion;
     step.dt_s = in.dt_s;
+    if (in.nut_path && in.nut_path->fits(parameters, in.dt_s, in.motion.size()) &&
+        in.nut_path->steps() == steps)
+        step.nut_path = in.nut_path.get();
     for (std::size_t k = 0; k <= steps; ++k) {
         if (k > 0) {
             step.ambient_begin_C = in.ambient_C[k - 1];
             step.ambient_end_C = in.ambient_C[k];
             step.mean_torque_squared_Nm2 =
                 in.mean_torque_squared_Nm2.empty() ? 0.0 : in.mean_torque_squared_Nm2[k - 1];
+            step.nut_path_step = k - 1;
             screw.step(step);
         }
         const double end_s = k == steps ? INFINITY : double(k) * in.dt_s + 1e-9;

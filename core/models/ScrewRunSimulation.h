@@ -5,6 +5,7 @@
 // Prepared once per run, then simulated for as many parameter sets as an
 // identification needs.
 
+#include <memory>
 #include <vector>
 
 #include "core/models/ThermalErrorData.h"
@@ -35,6 +36,10 @@ struct ScrewRunInputs {
     Signal air_rise_K, structure_rise_K;
     double max_gap_s = 120;
     double dead_path_mm = 0;  ///< interferometer dead path
+    /// The motion cut once for the run's screw on the identification grid
+    /// (prepareScrewRun with cells > 0); a simulation on another grid cuts it
+    /// step by step.
+    std::shared_ptr<const physics::NutPath> nut_path;
 };
 
 /// Where the simulation's room temperature comes from.
@@ -48,8 +53,10 @@ enum class RoomInput {
 /// motion (segments or a position column), an ambient channel (RoomInput::Channel).
 /// With RoomInput::Steady no temperature channel is read, the screw sensors included;
 /// with RoomInput::RoomOnly the ambient channel alone, when the run logs it.
+/// With `cells` > 0 the nut's path is cut for a screw of that many cells, for
+/// the many simulations of an identification.
 ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& model,
-                               RoomInput room = RoomInput::Channel);
+                               RoomInput room = RoomInput::Channel, int cells = 0);
 
 /// The screw of the campaign with its geometry and material; heat
 /// coefficients from `coefficients` (c_nut, c_b, h, …), numerics from `cells`.

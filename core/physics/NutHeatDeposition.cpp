@@ -41,22 +41,44 @@ double depositNutHeat(std::vector<double>& energy_J, double cell_m, double nut_m
     const double scale =
         dwell ? power_W * duration_s / nut_m : power_W * duration_s / (nut_m * stroke);
     double added = 0;
-    double previous = 0;
-    for (long i = first; i <= last; ++i) {
-        const double a = i * cell_m;
-        const double b = a + cell_m;
-        double covered;
-        if (dwell) {
-            covered = std::max(0.0, std::min(b, lo + halfNut) - std::max(a, lo - halfNut));
-        } else {
-            const double left = i == first ? overlapAntiderivative(a, halfNut, lo, hi) : previous;
-            previous = overlapAntiderivative(b, halfNut, lo, hi);
-            covered = previous - left;
-        }
-        const double e = scale * covered;
+    auto add = [&](long i, double e) {
         energy_J[static_cast<std::size_t>(i)] += e;
         added += e;
+    };
+    if (dwell) {
+        for (long i = first; i <= last; ++i) {
+            const double a = i * cell_m;
+            add(i, scale * std::max(0.0, std::min(a + cell_m, lo + halfNut) -
+                                             std::max(a, lo - halfNut)));
+        }
+        return added;
     }
+    // Cells [from, to): the overlap's integral over each, from its antiderivative.
+    auto ramps = [&](long from, long to) {
+        if (from >= to) return;
+        double left = overlapAntiderivative(from * cell_m, halfNut, lo, hi);
+        for (long i = from; i < to; ++i) {
+            const double right = overlapAntiderivative(i * cell_m + cell_m, halfNut, lo, hi);
+            add(i, scale * (right - left));
+            left = right;
+        }
+    };
+    // A cell between lo + w/2 and hi − w/2 sees the whole nut pass over it:
+    // there the antiderivative is w·(x − lo), so each such cell takes w·cell
+    // and the ramps are needed only where the stroke turns: on a long stroke,
+    // a few of its cells.
+    const long innerFirst = std::max(first, static_cast<long>(std::ceil((lo + halfNut) / cell_m)));
+    const long innerEnd =
+        std::min(last + 1, static_cast<long>(std::floor((hi - halfNut) / cell_m)));
+    if (innerFirst >= innerEnd) {
+        ramps(first, last + 1);
+        return added;
+    }
+    ramps(first, innerFirst);
+    const double inner = scale * nut_m * cell_m;
+    for (long i = innerFirst; i < innerEnd; ++i) energy_J[static_cast<std::size_t>(i)] += inner;
+    added += inner * double(innerEnd - innerFirst);
+    ramps(innerEnd, last + 1);
     return added;
 }
 

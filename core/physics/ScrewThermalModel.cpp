@@ -55,49 +55,38 @@ void ScrewThermalModel::refactorise(double dt_s, double h_W_m2K) {
     factorisedH_ = h_W_m2K;
 }
 
-double ScrewThermalModel::collectMotionHeat(const StepConditions& c, double t0, double t1) {
-    const auto& motion = c.motion;
-    // Segments are in time order, so the cursor stays valid while the one
-    // before it has ended. (Testing the cursor's own start instead rescanned
-    // the whole list on every step of a gap between segments or after the
-    // last one: quadratic in the run length.)
-    if (motionCursor_ > motion.size() ||
-        (motionCursor_ > 0 && motion[motionCursor_ - 1].end_s > t0))
-        motionCursor_ = 0;
-    while (motionCursor_ < motion.size() && motion[motionCursor_].end_s <= t0) ++motionCursor_;
+/// The bearings' heat of a piece of motion; returns its ∫ |ω|^m dt, for
+/// forced convection.
+double ScrewThermalModel::heatBearings(double omega_rad_s, double duration_s) {
+    const double bearing = parameters_.c_bearing_W_per_rad_s * omega_rad_s * duration_s;
+    source_J_.front() += bearing;
+    source_J_.back() += bearing;
+    ledger_.bearings_J += 2 * bearing;
+    return parameters_.h1_forced_W_m2K > 0
+               ? std::pow(omega_rad_s, parameters_.forced_exponent) * duration_s
+               : 0.0;
+}
 
-    const double length = parameters_.length_m;
+double ScrewThermalModel::collectMotionHeat(const StepConditions& c, double t0, double t1) {
     double speedPowerIntegral = 0;  // ∫ |ω|^m dt, for forced convection
-    for (std::size_t k = motionCursor_; k < motion.size() && motion[k].start_s < t1; ++k) {
-        const MotionSegment& s = motion[k];
-        const double a = std::max(s.start_s, t0);
-        const double b = std::min(s.end_s, t1);
-        if (b <= a) continue;
-        const double span = s.end_s - s.start_s;
-        auto at = [&](double t) {
-            const double axis =
-                span > 0 ? s.from_mm + (s.to_mm - s.from_mm) * (t - s.start_s) / span : s.from_mm;
-            return screwCoordinate_m(axis);
-        };
-        const double from = at(a);
-        const double to = at(b);
-        if (from < 0 || from > length || to < 0 || to > length)
-            throw std::invalid_argument(
-                "screw simulation: motion segment at " + std::to_string(s.start_s) + "–" +
-                std::to_string(s.end_s) + " s puts the nut at " +
-                std::to_string(from < 0 || from > length ? s.from_mm : s.to_mm) +
-                " mm, outside the screw");
-        const double duration = b - a;
-        const double omega = parameters_.screwSpeed_rad_s((to - from) / duration);
-        if (omega == 0) continue;
-        ledger_.nut_J += depositNutHeat(source_J_, dx_, parameters_.nut_length_m, from, to,
-                                        duration, parameters_.nutPower_W(omega));
-        const double bearing = parameters_.c_bearing_W_per_rad_s * omega * duration;
-        source_J_.front() += bearing;
-        source_J_.back() += bearing;
-        ledger_.bearings_J += 2 * bearing;
-        if (parameters_.h1_forced_W_m2K > 0)
-            speedPowerIntegral += std::pow(omega, parameters_.forced_exponent) * duration;
+    if (c.nut_path) {
+        const NutPath& path = *c.nut_path;
+        for (const NutPath::Piece& piece : path.step(c.nut_path_step)) {
+            const double power = parameters_.nutPower_W(piece.omega_rad_s);
+            const double* w = path.weights(piece);
+            double* q = source_J_.data() + piece.first_cell;
+            for (std::size_t i = 0; i < piece.cells; ++i) q[i] += power * w[i];
+            ledger_.nut_J += power * piece.total_J_per_W;
+            speedPowerIntegral += heatBearings(piece.omega_rad_s, piece.duration_s);
+        }
+        return speedPowerIntegral;
+    }
+    motionPieces(c.motion, motionCursor_, parameters_, t0, t1, pieces_);
+    for (const MotionPiece& piece : pieces_) {
+        ledger_.nut_J +=
+            depositNutHeat(source_J_, dx_, parameters_.nut_length_m, piece.from_m, piece.to_m,
+                           piece.duration_s, parameters_.nutPower_W(piece.omega_rad_s));
+        speedPowerIntegral += heatBearings(piece.omega_rad_s, piece.duration_s);
     }
     return speedPowerIntegral;
 }

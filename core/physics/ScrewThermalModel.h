@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/domain/Run.h"
+#include "core/physics/NutPath.h"
 #include "core/physics/ScrewThermalParameters.h"
 #include "core/physics/TridiagonalSolver.h"
 
@@ -26,6 +27,10 @@ struct StepConditions {
     /// The axis motion (axis mm, absolute s); only the part inside the step is
     /// used, so the whole run's segments may be passed every step.
     std::span<const MotionSegment> motion;
+    /// The same motion cut once for many simulations of one run (NutPath::fits
+    /// this screw and step), and this step's index in it; `motion` is then not read.
+    const NutPath* nut_path = nullptr;
+    std::size_t nut_path_step = 0;
     double mean_torque_squared_Nm2 = 0;  ///< mean of torque² over the step, motor heat
 };
 
@@ -82,6 +87,7 @@ public:
 private:
     void refactorise(double dt_s, double h_W_m2K);
     double collectMotionHeat(const StepConditions& c, double t0, double t1);
+    double heatBearings(double omega_rad_s, double duration_s);
     double cumulativeExpansion_m(double x_m, const std::vector<double>& prefix) const;
     std::vector<double> expansionPrefix() const;
 
@@ -94,6 +100,7 @@ private:
     double surface_m2_;          ///< per cell
     double time_s_ = 0;
     std::size_t motionCursor_ = 0;
+    std::vector<MotionPiece> pieces_;  ///< of the current step, without a NutPath
 
     std::vector<double> temperature_;
     std::vector<double> reference_;  ///< for the thermal error

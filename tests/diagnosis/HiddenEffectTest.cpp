@@ -278,10 +278,11 @@ TEST(HiddenEffects, diagnosisNamesTheHiddenCauseAndNothingOnCleanData) {
         }
         // Structure left unexplained is shown in both quantities against
         // their noise: it may sit on a sensor while positioning is at noise.
-        if (o.verdict == QLatin1String("unexplained"))
+        if (o.verdict == QLatin1String("unexplained")) {
             EXPECT_TRUE(o.detail.contains(QStringLiteral("µm reading noise; worst temperature")) &&
                         o.detail.contains(QStringLiteral("K sensor noise")))
                 << qPrintable(o.detail);
+        }
     }
     test::printConfusion("confusion matrix", confusion, 20);
     std::cout << "correct: " << correct << " of " << all.size() << "\n";

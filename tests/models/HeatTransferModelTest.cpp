@@ -129,3 +129,32 @@ TEST(HeatTransferModel, identificationGridIsConvergedAgainstTheRigsGrid) {
     std::cout << "largest difference 100 cells/2 s vs 400 cells/0.5 s: " << worst << " µm\n";
     EXPECT_LT(worst, 0.1);
 }
+
+TEST(HeatTransferModel, aRunPreparedWithItsNutPathSimulatesAsOneCutStepByStep) {
+    // The identification prepares each run with the nut's path cut once for
+    // its grid; the simulation must be the one that cuts it at every step,
+    // and a simulation on another grid must not use the path.
+    const auto s3 = runs(rigCampaign(), {QStringLiteral("S3")});
+    const ScrewRunInputs cutOnce =
+        prepareScrewRun(s3[0], 2, QStringLiteral("test"), RoomInput::Channel, 100);
+    const ScrewRunInputs stepByStep = prepareScrewRun(s3[0], 2, QStringLiteral("test"));
+    ASSERT_TRUE(cutOnce.nut_path);
+    ASSERT_FALSE(stepByStep.nut_path);
+    const rig::RigSpec truth;
+    const auto points = s3[0].observationPoints();
+    for (int cells : {100, 160}) {
+        const auto parameters = screwParameters(s3[0], truth.screw, cells);
+        EXPECT_EQ(cutOnce.nut_path->fits(parameters, 2, cutOnce.motion.size()), cells == 100);
+        const auto a = simulateScrewRun(cutOnce, parameters, points);
+        const auto b = simulateScrewRun(stepByStep, parameters, points);
+        double worstError = 0, worstSensor = 0;
+        for (std::size_t i = 0; i < points.size(); ++i)
+            worstError = std::max(worstError, std::abs(a.error_um[i] - b.error_um[i]));
+        ASSERT_FALSE(a.sensor_C.empty());
+        for (std::size_t s = 0; s < a.sensor_C.size(); ++s)
+            for (std::size_t j = 0; j < a.sensor_C[s].size(); ++j)
+                worstSensor = std::max(worstSensor, std::abs(a.sensor_C[s][j] - b.sensor_C[s][j]));
+        EXPECT_LT(worstError, 1e-9) << cells << " cells";
+        EXPECT_LT(worstSensor, 1e-9) << cells << " cells";
+    }
+}
