@@ -144,8 +144,7 @@ ScrewRunOutputs simulateScrewRun(const ScrewRunInputs& in,
     physics::StepConditions step;
     step.motion = in.motion;
     step.dt_s = in.dt_s;
-    if (in.nut_path && in.nut_path->fits(parameters, in.dt_s, in.motion.size()) &&
-        in.nut_path->steps() == steps)
+    if (in.nut_path && in.nut_path->fits(parameters, in.dt_s, in.motion.size(), steps))
         step.nut_path = in.nut_path.get();
     for (std::size_t k = 0; k <= steps; ++k) {
         if (k > 0) {

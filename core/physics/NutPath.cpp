@@ -79,11 +79,12 @@ NutPath::NutPath(const ScrewThermalParameters& screw, std::span<const MotionSegm
     stepStart_.push_back(pieces_.size());
 }
 
-bool NutPath::fits(const ScrewThermalParameters& screw, double dt_s, std::size_t segments) const {
+bool NutPath::fits(const ScrewThermalParameters& screw, double dt_s, std::size_t segments,
+                   std::size_t steps) const {
     return screw.cells == screw_.cells && screw.length_m == screw_.length_m &&
            screw.lead_m == screw_.lead_m && screw.nut_length_m == screw_.nut_length_m &&
            screw.fixed_end_axis_mm == screw_.fixed_end_axis_mm && dt_s == dt_s_ &&
-           segments == segments_;
+           segments == segments_ && steps == this->steps();
 }
 
 }  // namespace driftlab::physics

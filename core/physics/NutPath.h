@@ -49,9 +49,10 @@ public:
     NutPath(const ScrewThermalParameters& screw, std::span<const MotionSegment> motion, double dt_s,
             std::size_t steps);
 
-    /// Whether the path was cut for this screw's geometry and grid, this step
-    /// and this many motion segments.
-    bool fits(const ScrewThermalParameters& screw, double dt_s, std::size_t segments) const;
+    /// Whether the path was cut for this screw's geometry and grid, this step,
+    /// this many motion segments and this many steps.
+    bool fits(const ScrewThermalParameters& screw, double dt_s, std::size_t segments,
+              std::size_t steps) const;
 
     std::size_t steps() const { return stepStart_.size() - 1; }
     /// The pieces of step k, from k·dt to (k + 1)·dt.

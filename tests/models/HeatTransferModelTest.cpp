@@ -144,7 +144,9 @@ TEST(HeatTransferModel, aRunPreparedWithItsNutPathSimulatesAsOneCutStepByStep) {
     const auto points = s3[0].observationPoints();
     for (int cells : {100, 160}) {
         const auto parameters = screwParameters(s3[0], truth.screw, cells);
-        EXPECT_EQ(cutOnce.nut_path->fits(parameters, 2, cutOnce.motion.size()), cells == 100);
+        EXPECT_EQ(cutOnce.nut_path->fits(parameters, 2, cutOnce.motion.size(),
+                                         cutOnce.ambient_C.size() - 1),
+                  cells == 100);
         const auto a = simulateScrewRun(cutOnce, parameters, points);
         const auto b = simulateScrewRun(stepByStep, parameters, points);
         double worstError = 0, worstSensor = 0;

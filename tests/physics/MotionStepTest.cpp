@@ -105,22 +105,23 @@ TEST(MotionStep, PathFitsOnlyWhatItWasCutFor) {
     const ScrewThermalParameters p;
     const NutPath path(p, motion, kStep_s, kSteps);
     EXPECT_EQ(path.steps(), kSteps);
-    EXPECT_TRUE(path.fits(p, kStep_s, motion.size()));
-    EXPECT_FALSE(path.fits(p, 2 * kStep_s, motion.size()));
-    EXPECT_FALSE(path.fits(p, kStep_s, motion.size() - 1));
+    EXPECT_TRUE(path.fits(p, kStep_s, motion.size(), kSteps));
+    EXPECT_FALSE(path.fits(p, 2 * kStep_s, motion.size(), kSteps));
+    EXPECT_FALSE(path.fits(p, kStep_s, motion.size() - 1, kSteps));
+    EXPECT_FALSE(path.fits(p, kStep_s, motion.size(), kSteps + 1));
     for (auto change : {+[](ScrewThermalParameters& q) { q.cells *= 2; },
                         +[](ScrewThermalParameters& q) { q.lead_m *= 2; },
                         +[](ScrewThermalParameters& q) { q.nut_length_m *= 2; },
                         +[](ScrewThermalParameters& q) { q.fixed_end_axis_mm += 1; }}) {
         ScrewThermalParameters other = p;
         change(other);
-        EXPECT_FALSE(path.fits(other, kStep_s, motion.size()));
+        EXPECT_FALSE(path.fits(other, kStep_s, motion.size(), kSteps));
     }
     // Heat coefficients are not part of the cut.
     ScrewThermalParameters hotter = p;
     hotter.c_nut_W_per_rad_s *= 3;
     hotter.h_W_m2K *= 2;
-    EXPECT_TRUE(path.fits(hotter, kStep_s, motion.size()));
+    EXPECT_TRUE(path.fits(hotter, kStep_s, motion.size(), kSteps));
 
     std::vector<MotionSegment> overrun = motion;
     overrun[3].to_mm = p.length_m * 1e3 + 10;
