@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "core/diagnosis/CandidateScoring.h"
+#include "core/diagnosis/CauseSelection.h"
 #include "core/models/ModelError.h"
 
 namespace driftlab::diagnosis {
@@ -26,75 +27,6 @@ bool leavesOnlyNoise(const ResidualSummary& after, const ResidualSummary& before
     const double temperatureAllowed =
         std::max(factor * after.worst_channel_noise_K + 0.01, 0.1 * before.worst_channel_rms_K);
     return positioning && after.worst_channel_rms_K <= temperatureAllowed;
-}
-
-/// Whether a significant effect on the axis also explains most of what the
-/// sensor effect `s` explains on its sensor: one physical cause that fits
-/// every reading beats an effect on one sensor that absorbs its share of the
-/// base model's compromise.
-bool explainedByPhysics(const Finding& s, const std::vector<Finding>& findings,
-                        const std::vector<models::ReadingResiduals>& before) {
-    const double base = quantityResidual(before, s.effect.channel).rms();
-    for (const auto& p : findings) {
-        if (!p.significant || !p.effect.channel.isEmpty() || !(base > 0)) continue;
-        const double reduction =
-            1 - quantityResidual(p.test_residuals, s.effect.channel).rms() / base;
-        if (reduction >= 0.8 * s.gain.reduction) return true;
-    }
-    return false;
-}
-
-/// Best held-out gain first. The confidence of each: the probability that
-/// its gain is real and larger than every other candidate's, on the held-out
-/// stretches (StretchJackknife). The chances of these failing are summed, so
-/// the confidence is a lower bound (Bonferroni) and needs no assumption on
-/// how the candidates' gains correlate. A sensor effect the physics explains
-/// on its sensor is no competitor, and not a cause of its own (confidence 0):
-/// it is the same cause seen on one sensor.
-void rank(std::vector<Finding>& findings, const std::vector<models::ReadingResiduals>& before) {
-    std::sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) {
-        return a.gain.reduction > b.gain.reduction;
-    });
-    std::vector<bool> competes;
-    for (const Finding& f : findings)
-        competes.push_back(f.effect.channel.isEmpty() || !explainedByPhysics(f, findings, before));
-    for (std::size_t i = 0; i < findings.size(); ++i) {
-        if (!competes[i]) continue;
-        const StretchSquares& own = findings[i].gain.stretches;
-        double doubt = 1 - probabilityLarger(own, nullptr);
-        for (std::size_t j = 0; j < findings.size(); ++j)
-            if (j != i && competes[j])
-                doubt += 1 - probabilityLarger(own, &findings[j].gain.stretches);
-        findings[i].confidence = std::max(0.0, 1 - doubt);
-    }
-}
-
-/// An effect on the axis that the training runs do not contradict is
-/// significant by its confidence, once ranked: held-out runs at other speeds
-/// can show a speed law that training runs at close speeds cannot
-/// (DiagnosisOptions::min_held_out_confidence).
-void admitHeldOutEvidence(std::vector<Finding>& findings, const DiagnosisOptions& options) {
-    for (Finding& f : findings)
-        if (!f.significant && f.effect.channel.isEmpty() && f.bic_drop > 0 &&
-            f.gain.reduction >= options.min_explained &&
-            f.confidence >= options.min_held_out_confidence) {
-            f.significant = true;
-            f.evidence += QStringLiteral(
-                              "; the training runs hardly show it (ΔBIC %1), the held-out "
-                              "runs do (confidence %2)")
-                              .arg(f.bic_drop, 0, 'f', 0)
-                              .arg(f.confidence, 0, 'f', 3);
-        }
-}
-
-/// The significant finding with the largest gain, or nullptr.
-const Finding* bestSignificant(const std::vector<Finding>& findings,
-                               const std::vector<models::ReadingResiduals>& before) {
-    for (const auto& f : findings)
-        if (f.significant &&
-            (f.effect.channel.isEmpty() || !explainedByPhysics(f, findings, before)))
-            return &f;
-    return nullptr;
 }
 
 struct Cancelled {};
@@ -131,7 +63,7 @@ std::vector<Finding> testCandidates(
     std::vector<Finding> findings;
     for (auto& f : scored)
         if (f) findings.push_back(std::move(*f));  // none: an extension the data cannot carry
-    rank(findings, base.test);
+    rankFindings(findings, base.test);
     admitHeldOutEvidence(findings, data.options);
     return findings;
 }
@@ -285,8 +217,8 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
                     rest.push_back({f.effect, own});
                 }
                 const auto second = testCandidates(*adopted, rest, 2, data, &done, 0.7, 1);
-                const Finding* next = bestSignificant(second, adopted->test);
-                if (next && next->gain.reduction >= options.min_second_gain) {
+                const Finding* next = secondCause(second, *first, adopted->test, options);
+                if (next) {
                     causes << next->cause;
                     adopted = adoptedStepBase({first->effect, next->effect}, *next);
                 }

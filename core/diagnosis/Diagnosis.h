@@ -34,7 +34,8 @@ struct DiagnosisOptions {
     /// … or removes at least this share of it (then what remains is described).
     double min_explained = 0.6;
     /// A second cause is named on top of the first when it removes at least
-    /// this share of what the first one leaves.
+    /// this share of what the first one leaves (a sensor effect on a sensor
+    /// the first cause did not show in: min_explained of that sensor's).
     double min_second_gain = 0.2;
     /// On a base model that fits to the noise (kNoiseLevelTolerance) a cause
     /// is named only with at least this confidence: the held-out stretches

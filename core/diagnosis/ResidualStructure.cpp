@@ -90,13 +90,14 @@ bool ResidualSummary::atNoiseLevel(double tolerance) const {
     return positioning && temperature;
 }
 
+double shareAboveNoiseExplained(double before, double after, double noise) {
+    return std::clamp((before * before - after * after) / (before * before - noise * noise), 0.0,
+                      1.0);
+}
+
 double structureExplained(const ResidualSummary& before, const ResidualSummary& after) {
     if (!hasPositioningStructure(before, after)) return 1;
-    const double structure2 =
-        before.error_rms_um * before.error_rms_um - after.error_noise_um * after.error_noise_um;
-    const double explained2 =
-        before.error_rms_um * before.error_rms_um - after.error_rms_um * after.error_rms_um;
-    return std::clamp(explained2 / structure2, 0.0, 1.0);
+    return shareAboveNoiseExplained(before.error_rms_um, after.error_rms_um, after.error_noise_um);
 }
 
 double structureRmsExplained(const ResidualSummary& before, const ResidualSummary& after) {

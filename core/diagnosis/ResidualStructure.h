@@ -42,6 +42,11 @@ struct ResidualSummary {
     bool atNoiseLevel(double tolerance = kNoiseLevelTolerance) const;
 };
 
+/// The share of a residual's mean square above its noise that a model
+/// removes: (before² − after²) / (before² − noise²), clamped to [0, 1]; the
+/// caller makes sure `before` stands above the noise.
+double shareAboveNoiseExplained(double before, double after, double noise);
+
 /// The share of the positioning structure, the mean square above the reading
 /// noise, that a model explains: (before² − after²) / (before² − noise²) in
 /// [0, 1]; 1 when it leaves no more than the noise, or when `before` is at
