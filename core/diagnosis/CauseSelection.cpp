@@ -47,9 +47,9 @@ bool explainsMostOfItsSensor(const Finding& f, const std::vector<models::Reading
 /// its gain is real and larger than every other candidate's, on the held-out
 /// stretches (StretchJackknife). The chances of these failing are summed, so
 /// the confidence is a lower bound (Bonferroni) and needs no assumption on
-/// how the candidates' gains correlate. A sensor effect the physics explains
-/// on its sensor is no competitor, and not a cause of its own (confidence 0):
-/// it is the same cause seen on one sensor.
+/// how the candidates' gains correlate. A fit compromise is no competitor;
+/// nor is a sensor effect the physics explains on its sensor, and it is not a
+/// cause of its own (confidence 0): it is the same cause seen on one sensor.
 void rankFindings(std::vector<Finding>& findings,
                   const std::vector<models::ReadingResiduals>& before) {
     std::sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) {
@@ -57,7 +57,8 @@ void rankFindings(std::vector<Finding>& findings,
     });
     std::vector<bool> competes;
     for (const Finding& f : findings)
-        competes.push_back(f.effect.channel.isEmpty() || !explainedByPhysics(f, findings, before));
+        competes.push_back(!f.fit_compromise && (f.effect.channel.isEmpty() ||
+                                                 !explainedByPhysics(f, findings, before)));
     for (std::size_t i = 0; i < findings.size(); ++i) {
         if (!competes[i]) continue;
         const StretchSquares& own = findings[i].gain.stretches;
@@ -75,7 +76,7 @@ void rankFindings(std::vector<Finding>& findings,
 /// (DiagnosisOptions::min_held_out_confidence).
 void admitHeldOutEvidence(std::vector<Finding>& findings, const DiagnosisOptions& options) {
     for (Finding& f : findings)
-        if (!f.significant && f.effect.channel.isEmpty() && f.bic_drop > 0 &&
+        if (!f.significant && !f.fit_compromise && f.effect.channel.isEmpty() && f.bic_drop > 0 &&
             f.gain.reduction >= options.min_explained &&
             f.confidence >= options.min_held_out_confidence) {
             f.significant = true;

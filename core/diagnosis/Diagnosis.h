@@ -75,6 +75,9 @@ struct Finding {
     /// cause named, times the share of the structure the causes explain.
     double confidence = 0;
     bool significant = false;
+    /// It buys its gain by making the other kind of reading worse (see
+    /// scoreCandidate): not a cause, and no competitor of one.
+    bool fit_compromise = false;
     double bic_drop = 0;  ///< on the training runs, of the gain's quantity
     QString evidence;
     Gain gain;
