@@ -6,6 +6,11 @@
 namespace driftlab::diagnosis {
 namespace {
 
+/// How far a room offset may pull a screw sensor from the soaked start:
+/// calibration scatter between sensors that read the same soaked room (the
+/// independent campaigns' sensors agree to 0.02 K).
+constexpr double kSoakedStartTolerance_K = 0.03;
+
 std::vector<models::ReadingResiduals> residualsOf(const models::HeatTransferModel& model,
                                                   const std::vector<models::RunData>& runs) {
     std::vector<models::ReadingResiduals> out;
@@ -162,6 +167,29 @@ std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffec
         !(channel.isEmpty()
               ? f.test_after.temperature_rms_K <= 1.2 * f.test_before.temperature_rms_K + 0.01
               : f.test_after.error_rms_um <= 1.02 * f.test_before.error_rms_um + 0.02);
+    // A room sensor's offset moves every screw sensor against the model. At
+    // the soaked start of a run, before any heat acts, each screw sensor reads
+    // the room the screw soaked in: a true offset brings all of them to the
+    // model there. One that pulls a sensor away from it is spreading another
+    // sensor's offset, or a heat input, over all of them (the independent
+    // campaigns' nut-sensor offset under motor heat, docs/diagnosis.md §4).
+    QString pulledAway;
+    if (channel.isEmpty() && candidate.cause.startsWith(QLatin1String("sensor_offset:")) &&
+        !base.test.empty())
+        for (const auto& sensor : base.test.front().sensors) {
+            const double from = soakedStartResidual_K(base.test, sensor.channel_id);
+            const double to = soakedStartResidual_K(test, sensor.channel_id);
+            if (to > from + kSoakedStartTolerance_K && pulledAway.isEmpty()) {
+                f.fit_compromise = true;
+                pulledAway = QStringLiteral(
+                                 ": it pulls sensor %1 away from the room temperature the "
+                                 "screw soaked in (at the held-out runs' start %2 → %3 K "
+                                 "RMS), a fit compromise, not a cause")
+                                 .arg(sensor.channel_id)
+                                 .arg(from, 0, 'f', 3)
+                                 .arg(to, 0, 'f', 3);
+            }
+        }
     // Nor is an effect on a sensor that changes its reading by less than the
     // sensor's noise (with thousands of readings BIC finds that significant):
     // the part of the held-out residual it removes, √(before² − after²), must
@@ -173,7 +201,9 @@ std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffec
     f.significant = !f.fit_compromise && aboveNoise && f.bic_drop > data.options.min_bic_drop &&
                     f.gain.reduction > data.options.min_test_gain;
     f.evidence = evidenceFor(f, data.test_ids);
-    if (f.fit_compromise)
+    if (!pulledAway.isEmpty())
+        f.evidence += pulledAway;
+    else if (f.fit_compromise)
         f.evidence += channel.isEmpty() ? QStringLiteral(
                                               ": it bends the heat balance to fit the positioning "
                                               "error, a fit compromise, not a cause")

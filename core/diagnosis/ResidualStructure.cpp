@@ -68,6 +68,28 @@ double residualNoise_K(const std::vector<models::ReadingResiduals>& residuals,
     return upperMedian(perRun);
 }
 
+double soakedStartResidual_K(const std::vector<models::ReadingResiduals>& residuals,
+                             const QString& channel) {
+    double squares = 0;
+    int runs = 0;
+    for (const auto& r : residuals)
+        for (const auto& sensor : r.sensors) {
+            if (sensor.channel_id != channel || sensor.time_s.empty()) continue;
+            double sum = 0;
+            int n = 0;
+            for (std::size_t k = 0; k < sensor.time_s.size(); ++k)
+                if (sensor.time_s[k] <= sensor.time_s.front() + 60 &&
+                    std::isfinite(sensor.residual_K[k])) {
+                    sum += sensor.residual_K[k];
+                    ++n;
+                }
+            if (n == 0) continue;
+            squares += std::pow(sum / n, 2);
+            ++runs;
+        }
+    return runs ? std::sqrt(squares / runs) : NAN;
+}
+
 QuantityResidual quantityResidual(const std::vector<models::ReadingResiduals>& residuals,
                                   const QString& channel) {
     QuantityResidual q;

@@ -74,6 +74,13 @@ struct QuantityResidual {
 QuantityResidual quantityResidual(const std::vector<models::ReadingResiduals>& residuals,
                                   const QString& channel);
 
+/// A sensor's residual at the soaked start, K: its mean over the first minute
+/// of each run, where no heat has acted yet and the screw has the room
+/// temperature it soaked in; the RMS of those means over the runs. NaN when no
+/// run has the sensor.
+double soakedStartResidual_K(const std::vector<models::ReadingResiduals>& residuals,
+                             const QString& channel);
+
 /// Where the positioning residual sits (position band × time band with the
 /// largest mean) and which temperature rise it follows best, in words.
 QString describeStructure(const std::vector<models::ReadingResiduals>& residuals,
