@@ -59,7 +59,10 @@ std::vector<std::vector<double>> truthAt(const TruthDrift& truth, const std::vec
 }
 
 TEST(IndependentSpindle, autoAgainstLeastSquaresOnAllSixteenRisesAndTheBestPair) {
-    const QDir suite(QStringLiteral(DRIFTLAB_INDEPENDENT_SPINDLE));
+    // DRIFTLAB_INDEPENDENT_SPINDLE=DIR scores other draws of the simulator
+    // (spindle_campaign.py --seeds 5,6,7,8 --out DIR; docs/models.md §3).
+    const QDir suite(qEnvironmentVariable("DRIFTLAB_INDEPENDENT_SPINDLE",
+                                          QStringLiteral(DRIFTLAB_INDEPENDENT_SPINDLE)));
     const QStringList campaigns = suite.entryList(QDir::Dirs | QDir::NoDotAndDotDot);
     ASSERT_FALSE(campaigns.isEmpty()) << "no campaign in " << qPrintable(suite.path());
     test::printAutoAgainstBaselinesHeader();
