@@ -13,9 +13,10 @@ namespace {
 /// The families, simplest first: the order they are tried and reported in.
 const QStringList& familiesSimplestFirst() {
     static const QStringList families{
-        QStringLiteral("mlr"),         QStringLiteral("poly-position"),
-        QStringLiteral("exponential"), QStringLiteral("sensorless"),
-        QStringLiteral("arx"),         QStringLiteral("heat-transfer")};
+        QStringLiteral("mlr"),          QStringLiteral("poly-position"),
+        QStringLiteral("exponential"),  QStringLiteral("sensorless"),
+        QStringLiteral("arx"),          QStringLiteral("arx-all"),
+        QStringLiteral("heat-transfer")};
     return families;
 }
 

@@ -17,41 +17,9 @@ using arx::designOf;
 using arx::InputSearch;
 using arx::lastTime;
 using arx::riseInput;
+using arx::risesAboveItsNoise;
 using arx::SetScore;
 using arx::withRunZeros;
-
-/// Whether the channel's rise, over some training run, spans more than ten
-/// times its noise (from successive differences, which a slow rise hardly
-/// touches). A flat channel (the room thermometer of a steady room) carries no
-/// heat; lagged, its noise becomes a slow wander that a fit can match by chance.
-bool risesAboveItsNoise(const std::vector<RunData>& training, const QString& channel) {
-    for (const RunData& run : training)
-        for (const TemperatureRise& t : run.temperatures) {
-            if (t.channel_id != channel) continue;
-            double squares = 0, lo = INFINITY, hi = -INFINITY;
-            std::size_t steps = 0;
-            const std::vector<double>& v = t.rise_K.value;
-            for (std::size_t i = 0; i < v.size(); ++i) {
-                if (!std::isfinite(v[i])) continue;
-                lo = std::min(lo, v[i]);
-                hi = std::max(hi, v[i]);
-                if (i > 0 && std::isfinite(v[i - 1])) {
-                    squares += (v[i] - v[i - 1]) * (v[i] - v[i - 1]);
-                    ++steps;
-                }
-            }
-            if (steps == 0) continue;
-            // White noise σ gives differences of RMS σ·√2.
-            const double noise_K = std::max(std::sqrt(squares / double(steps) / 2), 1e-3);
-            if (hi - lo > 10 * noise_K) return true;
-        }
-    return false;
-}
-
-QString minutes(double tau_s) {
-    return tau_s >= 5400 ? QStringLiteral("%1 h").arg(tau_s / 3600, 0, 'f', 1)
-                         : QStringLiteral("%1 min").arg(tau_s / 60, 0, 'f', 0);
-}
 
 }  // namespace
 
@@ -189,12 +157,12 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
             summary.parameters[s + QStringLiteral(".b_lag")] = {
                 coefficients_[m + g], fit.sigma[m + g], QStringLiteral("µm/(K·mm)")};
         }
-        described << QStringLiteral("%1 (lag %2)").arg(s, minutes(inputs_[k].tau_s));
+        described << QStringLiteral("%1 (lag %2)").arg(s, arx::minutesOrHours(inputs_[k].tau_s));
         if (index[k] == 0 || index[k] + 1 == int(search.grid().size()))
             summary.notes << QStringLiteral(
                                  "the lag of %1 sits at the search bound (%2): the "
                                  "training runs do not pin it down")
-                                 .arg(s, minutes(inputs_[k].tau_s));
+                                 .arg(s, arx::minutesOrHours(inputs_[k].tau_s));
         summary.inputs << s;
     }
     if (!positionDependent) {

@@ -34,6 +34,35 @@ double riseAtStart(const Signal& rise, double window_s) {
 
 }  // namespace
 
+QString minutesOrHours(double tau_s) {
+    return tau_s >= 5400 ? QStringLiteral("%1 h").arg(tau_s / 3600, 0, 'f', 1)
+                         : QStringLiteral("%1 min").arg(tau_s / 60, 0, 'f', 0);
+}
+
+bool risesAboveItsNoise(const std::vector<RunData>& training, const QString& channel) {
+    for (const RunData& run : training)
+        for (const TemperatureRise& t : run.temperatures) {
+            if (t.channel_id != channel) continue;
+            double squares = 0, lo = INFINITY, hi = -INFINITY;
+            std::size_t steps = 0;
+            const std::vector<double>& v = t.rise_K.value;
+            for (std::size_t i = 0; i < v.size(); ++i) {
+                if (!std::isfinite(v[i])) continue;
+                lo = std::min(lo, v[i]);
+                hi = std::max(hi, v[i]);
+                if (i > 0 && std::isfinite(v[i - 1])) {
+                    squares += (v[i] - v[i - 1]) * (v[i] - v[i - 1]);
+                    ++steps;
+                }
+            }
+            if (steps == 0) continue;
+            // White noise σ gives differences of RMS σ·√2.
+            const double noise_K = std::max(std::sqrt(squares / double(steps) / 2), 1e-3);
+            if (hi - lo > 10 * noise_K) return true;
+        }
+    return false;
+}
+
 PiecewiseInput riseInput(const RunData& run, const QString& channel, double until_s) {
     for (const TemperatureRise& t : run.temperatures) {
         if (t.channel_id != channel) continue;

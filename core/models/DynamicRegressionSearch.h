@@ -30,6 +30,15 @@ struct SetScore {
 /// sample.
 PiecewiseInput riseInput(const RunData& run, const QString& channel, double until_s);
 
+/// Whether the channel's rise, over some training run, spans more than ten
+/// times its noise (from successive differences, which a slow rise hardly
+/// touches). A flat channel (the room thermometer of a steady room) carries no
+/// heat; lagged, its noise becomes a slow wander that a fit can match by chance.
+bool risesAboveItsNoise(const std::vector<RunData>& training, const QString& channel);
+
+/// A time constant as a note gives it: "25 min", or "2.0 h" from 1.5 h on.
+QString minutesOrHours(double tau_s);
+
 /// The latest of the points' times (0 for none).
 double lastTime(const std::vector<PredictionPoint>& at);
 

@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/models/AllRisesLagModel.h"
 #include "core/models/AutoModel.h"
 #include "core/models/DynamicRegressionModel.h"
 #include "core/models/ExponentialModel.h"
@@ -26,6 +27,7 @@ const std::vector<std::pair<QString, Maker>>& registry() {
         {QStringLiteral("heat-transfer"), [] { return std::make_unique<HeatTransferModel>(); }},
         {QStringLiteral("sensorless"), [] { return std::make_unique<SensorlessModel>(); }},
         {QStringLiteral("arx"), [] { return std::make_unique<DynamicRegressionModel>(); }},
+        {QStringLiteral("arx-all"), [] { return std::make_unique<AllRisesLagModel>(); }},
     };
     return models;
 }

@@ -23,14 +23,6 @@
 namespace driftlab::models {
 namespace {
 
-// Closed form of the first-order lag (τ2) of a first-order rise (τ1) started
-// at rest: y(s) = 1 − (τ1·e^(−s/τ1) − τ2·e^(−s/τ2))/(τ1 − τ2).
-double lagOfRise(double s, double tau1_s, double tau2_s) {
-    if (s <= 0) return 0;
-    return 1 -
-           (tau1_s * std::exp(-s / tau1_s) - tau2_s * std::exp(-s / tau2_s)) / (tau1_s - tau2_s);
-}
-
 constexpr double kDriftLag_s = 1800;
 
 /// Spindle runs whose z drift is −3 µm/K times the housing rise through a lag
@@ -61,7 +53,7 @@ Campaign laggedDriftCampaign(bool steadyRoom = false,
               [](double t) { return 20 + 0.01 * std::round(std::sin(0.37 * t)); }},
              {QStringLiteral("D_z"), [=](double t) {
                   return 0.3 + (t <= 60 ? shift_um : 0) -
-                         3 * rise * lagOfRise(t - 60, tau, kDriftLag_s);
+                         3 * rise * test::lagOfRise(t - 60, tau, kDriftLag_s);
               }}});
         run.kind = RunKind::Spindle;
         c.runs.push_back(run);
@@ -279,6 +271,7 @@ TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleR
             if (probe == QLatin1String("D_z") || probe == QLatin1String("D_y")) {
                 for (const QString& family : a.chosen.split(QStringLiteral(" + ")))
                     EXPECT_TRUE(family == QStringLiteral("arx") ||
+                                family == QStringLiteral("arx-all") ||
                                 family == QStringLiteral("exponential"))
                         << qPrintable(a.chosen);
                 EXPECT_LT(a.score.rms_um, 0.5 * baseline);

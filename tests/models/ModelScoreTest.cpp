@@ -123,7 +123,8 @@ TEST(ModelFactory, makesEveryNamedModel) {
     EXPECT_EQ(modelNames(),
               QStringList({QStringLiteral("mlr"), QStringLiteral("poly-position"),
                            QStringLiteral("exponential"), QStringLiteral("heat-transfer"),
-                           QStringLiteral("sensorless"), QStringLiteral("arx")}));
+                           QStringLiteral("sensorless"), QStringLiteral("arx"),
+                           QStringLiteral("arx-all")}));
     // A single fit may also ask for "auto", which is no family of its own and
     // so stays out of the comparisons.
     EXPECT_EQ(fitModelNames(), modelNames() << QStringLiteral("auto"));

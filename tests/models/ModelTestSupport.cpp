@@ -14,6 +14,12 @@ double warmCool(double time_s, double tau_s, double warmupEnd_s) {
     return rise(warmupEnd_s) * std::exp(-(time_s - warmupEnd_s) / tau_s);
 }
 
+double lagOfRise(double s, double tau1_s, double tau2_s) {
+    if (s <= 0) return 0;
+    return 1 -
+           (tau1_s * std::exp(-s / tau1_s) - tau2_s * std::exp(-s / tau2_s)) / (tau1_s - tau2_s);
+}
+
 Profile randomWalk(unsigned seed, double step_K, double dt_s, double duration_s) {
     auto walk = std::make_shared<std::vector<double>>();
     std::mt19937 rng(seed);

@@ -24,6 +24,10 @@ constexpr double kLeadMm = 10;
 /// with time constant tau_s until warmupEnd_s, then a first-order decay.
 double warmCool(double time_s, double tau_s, double warmupEnd_s);
 
+/// Closed form of the first-order lag (τ2) of a first-order rise (τ1) started
+/// at rest: y(s) = 1 − (τ1·e^(−s/τ1) − τ2·e^(−s/τ2))/(τ1 − τ2); 0 for s ≤ 0.
+double lagOfRise(double s, double tau1_s, double tau2_s);
+
 /// A random walk (steps of `step_K` per `dt_s`) around 20 °C, deterministic in `seed`.
 Profile randomWalk(unsigned seed, double step_K, double dt_s, double duration_s);
 

@@ -71,7 +71,7 @@ TEST(ModelsPage, fitThroughTheWidgetsShowsStoresAndMatchesTheCli) {
     auto window = windowOn(store);
     ui::ModelsPage& page = *window->modelsPage();
     ASSERT_EQ(page.setupPanel()->trainList()->count(), 2);
-    EXPECT_EQ(page.setupPanel()->modelBox()->count(), 7);  // every models::fitModelNames()
+    EXPECT_EQ(page.setupPanel()->modelBox()->count(), 8);  // every models::fitModelNames()
     choose(page.setupPanel()->modelBox(), QStringLiteral("mlr"));
     check(page.setupPanel()->trainList(), {QStringLiteral("S1")});
     check(page.setupPanel()->testList(), {QStringLiteral("S3")});
@@ -120,7 +120,7 @@ TEST(ModelsPage, crossStateMatrixHoldsTheCliComparisonColouredGreenToRed) {
     ASSERT_TRUE(waitForJob(*page.job()));
     QTest::mouseClick(page.compareButton(), Qt::LeftButton);
     ASSERT_TRUE(waitForJob(*page.job()));
-    EXPECT_TRUE(page.status().startsWith(QStringLiteral("Compared 6 models")))
+    EXPECT_TRUE(page.status().startsWith(QStringLiteral("Compared 7 models")))
         << page.status().toStdString();
     saveScreenshot(*window, QStringLiteral("gui-models.png"));
 
@@ -130,7 +130,7 @@ TEST(ModelsPage, crossStateMatrixHoldsTheCliComparisonColouredGreenToRed) {
     const QJsonArray runs = cli[QStringLiteral("runs")].toArray();
     const ui::CrossStateMatrixModel& m = *page.matrixModel();
     ASSERT_EQ(m.columnCount(), runs.size());
-    ASSERT_EQ(m.rowCount(), 6 * runs.size());
+    ASSERT_EQ(m.rowCount(), 7 * runs.size());
     double lowest = INFINITY, highest = -INFINITY;
     for (int row = 0; row < m.rowCount(); ++row) {
         const QString header = m.headerData(row, Qt::Vertical).toString();

@@ -1,0 +1,134 @@
+// `arx-all`: every temperature rise plus one lagged rise, against closed
+// forms — a drift that is a static sum of five sensors plus one sensor
+// through a lag, a drift with no lag at all, and a screw's positioning error
+// (the two-sensor model with three distractors).
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+#include "core/models/AllRisesLagModel.h"
+#include "core/models/ModelScore.h"
+#include "tests/models/LeastSquaresBaselines.h"
+#include "tests/models/ModelTestSupport.h"
+
+namespace driftlab::models {
+namespace {
+
+constexpr double kTrailingLag_s = 1800;
+constexpr std::array<double, 5> kGain_um_per_K{-1.0, 0.6, -0.4, 1.2, -0.8};
+constexpr double kLagGain_um_per_K = -2.0;  ///< of T1's rise through the lag
+
+/// Four spindle runs, five thermometers T1…T5 each heating with its own
+/// time constant, amplitude and end of heating in each run; the z drift is Σ a_k·ΔT_k plus,
+/// with `lagged`, −2 µm/K times T1's rise through a lag of 1800 s (the part
+/// that trails every sensor, as a spindle shaft behind its bearings).
+Campaign fiveSensorCampaign(bool lagged) {
+    std::vector<std::pair<QString, ChannelRole>> temperatures;
+    for (int k = 1; k <= 5; ++k)
+        temperatures.emplace_back(QStringLiteral("T%1").arg(k), ChannelRole::Spindle);
+    Campaign c = test::feedAxisCampaign(temperatures);
+    c.channels.push_back(
+        {QStringLiteral("D_z"), Quantity::Displacement, ChannelRole::DriftZ, {}, {}, {}});
+    c.sample_columns.push_back(QStringLiteral("D_z"));
+    for (int r = 0; r < 4; ++r) {
+        // Each sensor warms with its own time constant and stops warming at
+        // its own time (the cooling of T1 ends the runs, so T1 rises
+        // throughout and its lag has the closed form below).
+        std::array<double, 5> tau_s{}, rise_K{}, end_s{};
+        for (std::size_t k = 0; k < 5; ++k) {
+            tau_s[k] = 300.0 * double(k + 1) * (1 + 0.6 * r);
+            rise_K[k] = 2.0 + double((k + 2 * std::size_t(r)) % 5);
+            end_s[k] = k == 0 ? 1e9 : 1500.0 + 900.0 * double((k + std::size_t(r)) % 5);
+        }
+        std::map<QString, test::Profile> columns;
+        for (std::size_t k = 0; k < 5; ++k)
+            columns[QStringLiteral("T%1").arg(k + 1)] = [=](double t) {
+                return 22 + rise_K[k] * test::warmCool(t, tau_s[k], end_s[k]);
+            };
+        columns[QStringLiteral("D_z")] = [=](double t) {
+            double drift = 0.3;
+            for (std::size_t k = 0; k < 5; ++k)
+                drift += kGain_um_per_K[k] * rise_K[k] * test::warmCool(t, tau_s[k], end_s[k]);
+            if (lagged)
+                drift += kLagGain_um_per_K * rise_K[0] *
+                         test::lagOfRise(t - 60, tau_s[0], kTrailingLag_s);
+            return drift;
+        };
+        driftlab::Run run =
+            test::sampledRun(c, QStringLiteral("SP%1").arg(r + 1), 7200, 15, columns);
+        run.kind = RunKind::Spindle;
+        c.runs.push_back(run);
+    }
+    return c;
+}
+
+TEST(AllRisesLag, recoversEveryGainAndTheLagOfAClosedFormAndPredictsARunHeatedDifferently) {
+    const Campaign c = fiveSensorCampaign(true);
+    const QString z = QStringLiteral("D_z");
+    const auto train = test::driftDataset(c, {"SP1", "SP2", "SP3"}, z);
+    const auto heldOut = test::driftDataset(c, {"SP4"}, z);
+    AllRisesLagModel model;
+    const FitSummary fit = model.fit(train);
+    ASSERT_TRUE(fit.success) << qPrintable(fit.message);
+    EXPECT_EQ(fit.inputs.size(), 5);
+    ASSERT_TRUE(fit.notes.back().contains(QStringLiteral("T1 through a lag")))
+        << qPrintable(fit.notes.back());
+    // τ to within one step of the searched grid (×1.5).
+    const double tau = fit.parameters.at(QStringLiteral("T1.tau")).value;
+    EXPECT_LT(std::abs(std::log(tau / kTrailingLag_s)), std::log(1.5)) << tau;
+    EXPECT_NEAR(fit.parameters.at(QStringLiteral("T1.a_lag")).value, kLagGain_um_per_K, 0.3);
+    for (int k = 2; k <= 5; ++k)
+        EXPECT_NEAR(fit.parameters.at(QStringLiteral("T%1.a").arg(k)).value,
+                    kGain_um_per_K[std::size_t(k - 1)], 0.1)
+            << k;
+
+    // The fourth run heats each sensor 2.8× slower than the first: least
+    // squares on the five rises alone shows the lag as hysteresis.
+    const Score score = scoreModel(model, heldOut);
+    ASSERT_TRUE(score.ok()) << qPrintable(score.error);
+    const test::LeastSquaresBaselines baselines = test::leastSquaresBaselines(train, heldOut);
+    EXPECT_LT(score.rms_um, 0.03 * score.uncompensated_rms_um);  // τ on a ×1.5 grid
+    EXPECT_LT(score.rms_um, 0.2 * baselines.all_rises.rms_um)
+        << "every rise without the lag cannot follow the part that trails them";
+}
+
+TEST(AllRisesLag, takesNoLagWhereTheDriftHasNone) {
+    const Campaign c = fiveSensorCampaign(false);
+    const QString z = QStringLiteral("D_z");
+    AllRisesLagModel model;
+    const FitSummary fit = model.fit(test::driftDataset(c, {"SP1", "SP2", "SP3"}, z));
+    ASSERT_TRUE(fit.success) << qPrintable(fit.message);
+    EXPECT_TRUE(fit.notes.back().startsWith(QStringLiteral("every rise (5 channels); no lagged")))
+        << qPrintable(fit.notes.back());
+    EXPECT_FALSE(std::any_of(fit.parameters.begin(), fit.parameters.end(), [](const auto& kv) {
+        return kv.first.endsWith(QStringLiteral(".tau"));
+    }));
+    const Score score = scoreModel(model, test::driftDataset(c, {"SP4"}, z));
+    ASSERT_TRUE(score.ok()) << qPrintable(score.error);
+    EXPECT_LT(score.rms_um, 1e-3 * score.uncompensated_rms_um);
+}
+
+TEST(AllRisesLag, fitsAScrewsPositioningErrorWithAGainAlongTheAxis) {
+    // E = ΔT_nut·(a1 + b1·dx) + ΔT_bearing·(a2 + b2·dx); T_air, T_bed and
+    // T_motor are random walks that carry none of it.
+    const test::TwoSensorGains gains;
+    const Campaign c = test::twoSensorCampaign(3, gains);
+    const DatasetResult train = buildDataset(c, {QStringLiteral("S1"), QStringLiteral("S2")});
+    const DatasetResult heldOut = buildDataset(c, {QStringLiteral("S3")});
+    ASSERT_TRUE(train.ok() && heldOut.ok());
+    AllRisesLagModel model;
+    const FitSummary fit = model.fit(train.runs);
+    ASSERT_TRUE(fit.success) << qPrintable(fit.message);
+    EXPECT_NEAR(fit.parameters.at(QStringLiteral("T_nut.a")).value, gains.a1, 0.02);
+    EXPECT_NEAR(fit.parameters.at(QStringLiteral("T_nut.b")).value, gains.b1, 2e-4);
+    EXPECT_NEAR(fit.parameters.at(QStringLiteral("T_bearing.a")).value, gains.a2, 0.02);
+    EXPECT_NEAR(fit.parameters.at(QStringLiteral("T_bed.a")).value, 0, 0.02);
+    const Score score = scoreModel(model, heldOut.runs);
+    ASSERT_TRUE(score.ok()) << qPrintable(score.error);
+    EXPECT_LT(score.rms_um, 0.01 * score.uncompensated_rms_um);
+}
+
+}  // namespace
+}  // namespace driftlab::models
