@@ -8,7 +8,8 @@
 // heat paths, the parts that move the tool but carry no sensor are, but for
 // one, nearly a weighted sum of their neighbours: all the rises give them
 // statically, where `mlr` and `arx` take three sensors at most; the part that
-// lags them all (a spindle shaft behind its bearings and stator) takes the lag.
+// lags them all (a spindle shaft behind its bearings and stator, a column core
+// behind its skin) takes the lag.
 
 #include <QStringList>
 #include <vector>
