@@ -87,8 +87,8 @@ TEST(ModelCli, compareGivesTheCrossStateMatrixOfEveryModel) {
     EXPECT_EQ(cmp[QStringLiteral("diagonal")].toString(),
               QStringLiteral("training score (fitted and scored on the same run)"));
     const QJsonObject models = cmp[QStringLiteral("models")].toObject();
-    EXPECT_EQ(models.keys(), QStringList({"arx", "arx-all", "exponential", "heat-transfer",
-                                          "mlr", "poly-position", "sensorless"}));
+    EXPECT_EQ(models.keys(), QStringList({"arx", "arx-all", "exponential", "heat-transfer", "mlr",
+                                          "poly-position", "sensorless"}));
     for (const QString& name : models.keys()) {
         const QJsonArray m = models[name][QStringLiteral("rms_um")].toArray();
         ASSERT_EQ(m.size(), 3) << qPrintable(name);
