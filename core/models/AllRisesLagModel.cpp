@@ -24,6 +24,25 @@ RunData thinned(const RunData& run, int rows) {
     return part;
 }
 
+std::vector<double> timesOf(const std::vector<PredictionPoint>& at) {
+    std::vector<double> times;
+    for (const PredictionPoint& p : at) times.push_back(p.time_s);
+    return times;
+}
+
+/// [rises, lag (when not empty)] with their position gains beside them for a
+/// positioning error (`dx` not empty), else with an offset.
+Eigen::MatrixXd allRisesDesign(const Eigen::MatrixXd& rises, const Eigen::VectorXd& lag,
+                               const Eigen::VectorXd& dx) {
+    Eigen::MatrixXd F(rises.rows(), rises.cols() + (lag.size() > 0 ? 1 : 0));
+    F.leftCols(rises.cols()) = rises;
+    if (lag.size() > 0) F.col(rises.cols()) = lag;
+    if (dx.size() > 0) return withPositionGain(F, dx);
+    Eigen::MatrixXd X(F.rows(), F.cols() + 1);
+    X << F, Eigen::VectorXd::Ones(F.rows());
+    return X;
+}
+
 }  // namespace
 
 AllRisesLagModel::AllRisesLagModel(AllRisesLagOptions options) : options_(options) {}
@@ -38,19 +57,13 @@ QString AllRisesLagModel::describe() const {
 
 Eigen::MatrixXd AllRisesLagModel::design(const RunData& run, const std::vector<PredictionPoint>& at,
                                          int lagged, double tau_s) const {
-    const Eigen::MatrixXd rises = risesAt(run, channels_, at);
-    Eigen::MatrixXd F(rises.rows(), rises.cols() + (lagged >= 0 ? 1 : 0));
-    F.leftCols(rises.cols()) = rises;
-    if (lagged >= 0) {
-        std::vector<double> times;
-        for (const PredictionPoint& p : at) times.push_back(p.time_s);
-        F.col(rises.cols()) = lagResponse(
-            arx::riseInput(run, channels_[qsizetype(lagged)], arx::lastTime(at)), tau_s, times);
-    }
-    if (run.positionDependent()) return withPositionGain(F, positionsFromFixedEnd(run, at));
-    Eigen::MatrixXd X(F.rows(), F.cols() + 1);
-    X << F, Eigen::VectorXd::Ones(F.rows());
-    return X;
+    Eigen::VectorXd lag;
+    if (lagged >= 0)
+        lag = lagResponse(arx::riseInput(run, channels_[qsizetype(lagged)], arx::lastTime(at)),
+                          tau_s, timesOf(at));
+    const Eigen::VectorXd dx =
+        run.positionDependent() ? positionsFromFixedEnd(run, at) : Eigen::VectorXd();
+    return allRisesDesign(risesAt(run, channels_, at), lag, dx);
 }
 
 FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
@@ -94,13 +107,40 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
         search.push_back(thinned(run, options_.search_rows_per_run));
     const std::vector<int> folds = crossValidationFolds(search, options_.time_blocks);
     const Eigen::VectorXd y = stackRows(search, &RunData::observedErrors);
+    // What every candidate shares, computed once: the rises, the positions,
+    // and each sensor's rise as a lag input (only the lag differs).
+    const bool positionDependent = training.front().positionDependent();
+    const Eigen::MatrixXd everyRise = stackRows(search, [&](const RunData& run) {
+        return risesAt(run, channels_, run.observationPoints());
+    });
+    Eigen::VectorXd dx;  // empty for a drift channel
+    if (positionDependent)
+        dx = stackRows(search, [](const RunData& run) {
+            return positionsFromFixedEnd(run, run.observationPoints());
+        });
+    std::vector<std::vector<PiecewiseInput>> lagInputs(std::size_t(channels_.size()));
+    auto lagColumn = [&](int j, double tau_s) {
+        std::vector<PiecewiseInput>& inputs = lagInputs[std::size_t(j)];
+        if (inputs.empty())
+            for (const RunData& run : search)
+                inputs.push_back(
+                    arx::riseInput(run, channels_[j], arx::lastTime(run.observationPoints())));
+        Eigen::VectorXd lag(everyRise.rows());
+        Eigen::Index at = 0;
+        for (std::size_t r = 0; r < search.size(); ++r) {
+            const Eigen::VectorXd part =
+                lagResponse(inputs[r], tau_s, timesOf(search[r].observationPoints()));
+            lag.segment(at, part.size()) = part;
+            at += part.size();
+        }
+        return lag;
+    };
     double best = std::numeric_limits<double>::infinity(), withoutLag = best;
     for (const auto& [j, tau] : candidates) {
         if (cancelRequested()) throw ModelError(QStringLiteral("model 'arx-all': fit cancelled"));
-        const Eigen::MatrixXd X = stackRows(search, [&, j = j, tau = tau](const RunData& run) {
-            return design(run, run.observationPoints(), j, tau);
-        });
-        const double cv = crossValidatedRms(X, y, folds);
+        const double cv = crossValidatedRms(
+            allRisesDesign(everyRise, j >= 0 ? lagColumn(j, tau) : Eigen::VectorXd(), dx), y,
+            folds);
         if (j < 0) withoutLag = cv;
         if (cv < best) {
             best = cv;
@@ -128,7 +168,6 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     coefficients_ = fit.coefficients;
 
     // Columns: every rise, the lagged rise, then their position gains or the offset.
-    const bool positionDependent = training.front().positionDependent();
     const auto rises = Eigen::Index(channels_.size());
     const Eigen::Index features = rises + (lagged_ >= 0 ? 1 : 0);
     auto put = [&](const QString& key, Eigen::Index column, const QString& unit) {
