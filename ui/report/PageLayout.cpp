@@ -90,6 +90,9 @@ public:
     }
 
     void table(const Table& t);
+    /// The height of the whole table when it fits on one page, else 0: a
+    /// table that fits is not split, and its heading stays with all of it.
+    double wholeTableHeight(const Table& t) const;
 
 private:
     void add(PageOp op) { m_pages.back().push_back(std::move(op)); }
@@ -179,7 +182,20 @@ void Placer::row(const std::vector<QString>& cells, const std::vector<bool>& rig
     m_y += height;
 }
 
+double Placer::wholeTableHeight(const Table& t) const {
+    const QFont body = font(7), head = font(7, true);
+    const std::vector<double> widths = columnWidths(t, body, head);
+    double h = rowHeight(std::vector<QString>(t.header.begin(), t.header.end()), widths, head);
+    for (const auto& r : t.rows) {
+        std::vector<QString> cells;
+        for (const Cell& c : r) cells.push_back(c.text);
+        h += rowHeight(cells, widths, body);
+    }
+    return h <= m_page.height() - 2 * kFrame ? h : 0;
+}
+
 void Placer::table(const Table& t) {
+    need(wholeTableHeight(t));
     const QFont body = font(7), head = font(7, true);
     const std::vector<double> widths = columnWidths(t, body, head);
     const std::vector<QString> header(t.header.begin(), t.header.end());
@@ -210,7 +226,13 @@ void Placer::table(const Table& t) {
 
 Pages layOut(const ReportDocument& doc, QPaintDevice& device, QSizeF page) {
     Placer placer(device, page);
-    for (const Block& b : doc.blocks) {
+    for (std::size_t i = 0; i < doc.blocks.size(); ++i) {
+        const Block& b = doc.blocks[i];
+        // A heading keeps room below it for the table it introduces, when that fits.
+        const bool tableNext =
+            i + 1 < doc.blocks.size() && doc.blocks[i + 1].kind == Block::Kind::Table;
+        const double keepWith =
+            std::max(kKeepWith, tableNext ? placer.wholeTableHeight(doc.blocks[i + 1].table) : 0);
         switch (b.kind) {
             case Block::Kind::PageBreak:
                 if (!placer.pageEmpty()) placer.newPage();
@@ -219,10 +241,10 @@ Pages layOut(const ReportDocument& doc, QPaintDevice& device, QSizeF page) {
                 placer.text(font(22, true), b.text, 40);
                 break;
             case Block::Kind::Heading:
-                placer.text(font(14, true), b.text, 4, kKeepWith);
+                placer.text(font(14, true), b.text, 4, keepWith);
                 break;
             case Block::Kind::Subheading:
-                placer.text(font(10, true), b.text, 8, kKeepWith);
+                placer.text(font(10, true), b.text, 8, keepWith);
                 break;
             case Block::Kind::Paragraph:
                 placer.text(font(9), b.text, 0);
