@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/models/CrossValidation.h"
 #include "core/models/DynamicRegressionSearch.h"
+#include "core/models/HeatSourceInputs.h"
 #include "core/models/LeastSquares.h"
 #include "core/models/ModelError.h"
 #include "core/models/RunDataAccess.h"
@@ -30,13 +32,25 @@ std::vector<double> timesOf(const std::vector<PredictionPoint>& at) {
     return times;
 }
 
-/// [rises, lag (when not empty)] with their position gains beside them for a
-/// positioning error (`dx` not empty), else with an offset.
-Eigen::MatrixXd allRisesDesign(const Eigen::MatrixXd& rises, const Eigen::VectorXd& lag,
+constexpr double kRadPerSPerKrpm = 2 * std::numbers::pi * 1000 / 60;
+
+/// The drive's speed in 1000 rpm raised to `exponent`: the spindle's for a
+/// drift channel, the screw's for a positioning error (as the exponential
+/// model takes it).
+PiecewiseInput heatInput(const RunData& run, int exponent, double until_s) {
+    const QString model = QStringLiteral("arx-all");
+    PiecewiseInput input = run.positionDependent() ? screwSpeed(run, until_s, model)
+                                                   : spindleSpeed(run, until_s, model);
+    for (double& v : input.value) v = std::pow(v / kRadPerSPerKrpm, exponent);
+    return input;
+}
+
+/// [rises, lags] with their position gains beside them for a positioning
+/// error (`dx` not empty), else with an offset.
+Eigen::MatrixXd allRisesDesign(const Eigen::MatrixXd& rises, const Eigen::MatrixXd& lags,
                                const Eigen::VectorXd& dx) {
-    Eigen::MatrixXd F(rises.rows(), rises.cols() + (lag.size() > 0 ? 1 : 0));
-    F.leftCols(rises.cols()) = rises;
-    if (lag.size() > 0) F.col(rises.cols()) = lag;
+    Eigen::MatrixXd F(rises.rows(), rises.cols() + lags.cols());
+    F << rises, lags;
     if (dx.size() > 0) return withPositionGain(F, dx);
     Eigen::MatrixXd X(F.rows(), F.cols() + 1);
     X << F, Eigen::VectorXd::Ones(F.rows());
@@ -49,21 +63,29 @@ AllRisesLagModel::AllRisesLagModel(AllRisesLagOptions options) : options_(option
 
 QString AllRisesLagModel::describe() const {
     return QStringLiteral(
-        "Least squares on every temperature rise, plus one sensor's rise through a "
-        "first-order lag, the sensor and its time constant chosen by cross-validation over "
-        "the training runs: many sensors give the unsensed parts statically, and the lag "
-        "follows the one that trails them all.");
+        "Least squares on every temperature rise, plus one sensor's rise and the drive's "
+        "heat (its speed or speed squared) through first-order lags, each chosen by "
+        "cross-validation over the training runs: many sensors give the unsensed parts "
+        "statically, one lag follows the part that trails them all, the other a part heated "
+        "by its own losses.");
 }
 
-Eigen::MatrixXd AllRisesLagModel::design(const RunData& run, const std::vector<PredictionPoint>& at,
-                                         int lagged, double tau_s) const {
-    Eigen::VectorXd lag;
-    if (lagged >= 0)
-        lag = lagResponse(arx::riseInput(run, channels_[qsizetype(lagged)], arx::lastTime(at)),
-                          tau_s, timesOf(at));
+Eigen::MatrixXd AllRisesLagModel::design(const RunData& run,
+                                         const std::vector<PredictionPoint>& at) const {
+    const double until = arx::lastTime(at);
+    const std::vector<double> times = timesOf(at);
+    Eigen::MatrixXd lags(Eigen::Index(at.size()), 0);
+    auto add = [&](const Eigen::VectorXd& column) {
+        lags.conservativeResize(Eigen::NoChange, lags.cols() + 1);
+        lags.rightCols(1) = column;
+    };
+    if (lagged_ >= 0)
+        add(lagResponse(arx::riseInput(run, channels_[qsizetype(lagged_)], until), tau_s_, times));
+    if (heatExponent_ > 0)
+        add(lagResponse(heatInput(run, heatExponent_, until), heatTau_s_, times));
     const Eigen::VectorXd dx =
         run.positionDependent() ? positionsFromFixedEnd(run, at) : Eigen::VectorXd();
-    return allRisesDesign(risesAt(run, channels_, at), lag, dx);
+    return allRisesDesign(risesAt(run, channels_, at), lags, dx);
 }
 
 FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
@@ -75,6 +97,8 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     channels_.clear();
     lagged_ = -1;
     tau_s_ = 0;
+    heatExponent_ = 0;
+    heatTau_s_ = 0;
     const QStringList unlogged = unloggedChannels(training);
     if (!unlogged.isEmpty())
         summary.notes << QStringLiteral("not logged in the training runs: %1")
@@ -93,22 +117,12 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
         throw ModelError(QStringLiteral("model 'arx-all' has no usable temperature channel (%1)")
                              .arg(summary.notes.join(QStringLiteral("; "))));
 
-    // The lag's candidates: a channel within its noise lagged by hours
-    // becomes a slow wander a fit can match by chance (as for `arx`).
-    std::vector<std::pair<int, double>> candidates{{-1, 0.0}};
-    for (int j = 0; j < int(channels_.size()); ++j) {
-        if (!arx::risesAboveItsNoise(training, channels_[j])) continue;
-        for (double tau = options_.min_tau_s; tau <= options_.max_tau_s * 1.0001;
-             tau *= options_.tau_step)
-            candidates.push_back({j, tau});
-    }
     std::vector<RunData> search;
     for (const RunData& run : training)
         search.push_back(thinned(run, options_.search_rows_per_run));
     const std::vector<int> folds = crossValidationFolds(search, options_.time_blocks);
     const Eigen::VectorXd y = stackRows(search, &RunData::observedErrors);
-    // What every candidate shares, computed once: the rises, the positions,
-    // and each sensor's rise as a lag input (only the lag differs).
+    // What every candidate shares, computed once: the rises and the positions.
     const bool positionDependent = training.front().positionDependent();
     const Eigen::MatrixXd everyRise = stackRows(search, [&](const RunData& run) {
         return risesAt(run, channels_, run.observationPoints());
@@ -118,13 +132,8 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
         dx = stackRows(search, [](const RunData& run) {
             return positionsFromFixedEnd(run, run.observationPoints());
         });
-    std::vector<std::vector<PiecewiseInput>> lagInputs(std::size_t(channels_.size()));
-    auto lagColumn = [&](int j, double tau_s) {
-        std::vector<PiecewiseInput>& inputs = lagInputs[std::size_t(j)];
-        if (inputs.empty())
-            for (const RunData& run : search)
-                inputs.push_back(
-                    arx::riseInput(run, channels_[j], arx::lastTime(run.observationPoints())));
+    // Each input's response over the search rows (the input built once per run).
+    auto lagColumn = [&](const std::vector<PiecewiseInput>& inputs, double tau_s) {
         Eigen::VectorXd lag(everyRise.rows());
         Eigen::Index at = 0;
         for (std::size_t r = 0; r < search.size(); ++r) {
@@ -135,17 +144,41 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
         }
         return lag;
     };
-    double best = std::numeric_limits<double>::infinity(), withoutLag = best;
-    for (const auto& [j, tau] : candidates) {
+    auto inputsOf = [&](auto&& input) {
+        std::vector<PiecewiseInput> inputs;
+        for (const RunData& run : search)
+            inputs.push_back(input(run, arx::lastTime(run.observationPoints())));
+        return inputs;
+    };
+    auto scoreWith = [&](const Eigen::MatrixXd& lags) {
         if (cancelRequested()) throw ModelError(QStringLiteral("model 'arx-all': fit cancelled"));
-        const double cv = crossValidatedRms(
-            allRisesDesign(everyRise, j >= 0 ? lagColumn(j, tau) : Eigen::VectorXd(), dx), y,
-            folds);
-        if (j < 0) withoutLag = cv;
-        if (cv < best) {
-            best = cv;
-            lagged_ = j;
-            tau_s_ = tau;
+        return crossValidatedRms(allRisesDesign(everyRise, lags, dx), y, folds);
+    };
+
+    // Step 1, the lagged rise. A channel within its noise lagged by hours
+    // becomes a slow wander a fit can match by chance (as for `arx`).
+    const double withoutLag = scoreWith(Eigen::MatrixXd(everyRise.rows(), 0));
+    if (!std::isfinite(withoutLag))
+        throw ModelError(QStringLiteral("model 'arx-all': the training runs are too few to "
+                                        "cross-validate every rise (%1 channels)")
+                             .arg(channels_.size()));
+    double best = withoutLag;
+    Eigen::VectorXd bestRiseLag;
+    for (int j = 0; j < int(channels_.size()); ++j) {
+        if (!arx::risesAboveItsNoise(training, channels_[j])) continue;
+        const std::vector<PiecewiseInput> inputs = inputsOf([&](const RunData& run, double until) {
+            return arx::riseInput(run, channels_[j], until);
+        });
+        for (double tau = options_.min_tau_s; tau <= options_.max_tau_s * 1.0001;
+             tau *= options_.tau_step) {
+            const Eigen::VectorXd lag = lagColumn(inputs, tau);
+            const double cv = scoreWith(lag);
+            if (cv < best) {
+                best = cv;
+                lagged_ = j;
+                tau_s_ = tau;
+                bestRiseLag = lag;
+            }
         }
     }
     // A lag must earn its place, as a further sensor in `mlr` must: a lower
@@ -154,61 +187,113 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
         best = withoutLag;
         lagged_ = -1;
         tau_s_ = 0;
+        bestRiseLag.resize(0);
     }
-    if (!std::isfinite(best))
-        throw ModelError(QStringLiteral("model 'arx-all': the training runs are too few to "
-                                        "cross-validate every rise (%1 channels)")
-                             .arg(channels_.size()));
 
-    const Eigen::MatrixXd X = stackRows(training, [&](const RunData& run) {
-        return design(run, run.observationPoints(), lagged_, tau_s_);
-    });
+    // Step 2, the drive's heat through a lag: a part heated by its own losses
+    // and carrying no thermometer (a spindle's rotor and shaft) follows no
+    // rise, its heat source does (its lag searched up to a quarter of the
+    // shortest training run, see the options).
+    double shortest_s = arx::kInfinity;
+    for (const RunData& run : training) {
+        const std::vector<PredictionPoint> at = run.observationPoints();
+        shortest_s = std::min(shortest_s, arx::lastTime(at) - at.front().time_s);
+    }
+    const double withoutHeat = best;
+    std::vector<std::vector<PiecewiseInput>> heatInputs;  // speed¹, speed²
+    QString heatNote;
+    try {
+        for (int exponent : {1, 2})
+            heatInputs.push_back(inputsOf(
+                [&](const RunData& run, double until) { return heatInput(run, exponent, until); }));
+    } catch (const ModelError& e) {
+        heatInputs.clear();
+        heatNote = QStringLiteral("no lagged heat input: %1").arg(e.message);
+    }
+    for (std::size_t e = 0; e < heatInputs.size(); ++e)
+        for (double tau = options_.min_tau_s;
+             tau <=
+             std::min(options_.max_tau_s, shortest_s * options_.max_heat_tau_of_run) * 1.0001;
+             tau *= options_.tau_step) {
+            Eigen::MatrixXd lags(everyRise.rows(), bestRiseLag.size() > 0 ? 2 : 1);
+            if (bestRiseLag.size() > 0) lags.col(0) = bestRiseLag;
+            lags.rightCols(1) = lagColumn(heatInputs[e], tau);
+            const double cv = scoreWith(lags);
+            // The same bar as the lagged rise's: 2 % below the RMS without it.
+            if (cv < best && simplestNearBest({withoutHeat, cv}) == 1) {
+                best = cv;
+                heatExponent_ = int(e) + 1;
+                heatTau_s_ = tau;
+            }
+        }
+
+    const Eigen::MatrixXd X = stackRows(
+        training, [&](const RunData& run) { return design(run, run.observationPoints()); });
     const Eigen::VectorXd observed = stackRows(training, &RunData::observedErrors);
     const LeastSquaresFit fit = solveLeastSquares(X, observed);
     coefficients_ = fit.coefficients;
 
-    // Columns: every rise, the lagged rise, then their position gains or the offset.
+    // Columns: every rise, the lagged rise, the lagged heat, then their
+    // position gains or the offset.
     const auto rises = Eigen::Index(channels_.size());
-    const Eigen::Index features = rises + (lagged_ >= 0 ? 1 : 0);
+    const Eigen::Index features = rises + (lagged_ >= 0 ? 1 : 0) + (heatExponent_ > 0 ? 1 : 0);
     auto put = [&](const QString& key, Eigen::Index column, const QString& unit) {
         summary.parameters[key] = {coefficients_[column], fit.sigma[column], unit};
+    };
+    auto putLag = [&](const QString& name, Eigen::Index column, const QString& perUnit,
+                      double tau_s) {
+        put(name + QStringLiteral(".a_lag"), column, QStringLiteral("µm/%1").arg(perUnit));
+        if (positionDependent)
+            put(name + QStringLiteral(".b_lag"), features + column,
+                QStringLiteral("µm/(%1·mm)").arg(perUnit));
+        // The grid step sets how well τ is known; no 1σ is claimed for it.
+        summary.parameters[name + QStringLiteral(".tau")] = {
+            tau_s, std::numeric_limits<double>::quiet_NaN(), QStringLiteral("s")};
     };
     for (Eigen::Index k = 0; k < rises; ++k) {
         put(channels_[k] + QStringLiteral(".a"), k, QStringLiteral("µm/K"));
         if (positionDependent)
             put(channels_[k] + QStringLiteral(".b"), features + k, QStringLiteral("µm/(K·mm)"));
     }
+    Eigen::Index column = rises;
+    QStringList lags;
     if (lagged_ >= 0) {
-        const QString& lag = channels_[qsizetype(lagged_)];
-        put(lag + QStringLiteral(".a_lag"), rises, QStringLiteral("µm/K"));
-        if (positionDependent)
-            put(lag + QStringLiteral(".b_lag"), features + rises, QStringLiteral("µm/(K·mm)"));
-        // The grid step sets how well τ is known; no 1σ is claimed for it.
-        summary.parameters[lag + QStringLiteral(".tau")] = {
-            tau_s_, std::numeric_limits<double>::quiet_NaN(), QStringLiteral("s")};
+        putLag(channels_[qsizetype(lagged_)], column++, QStringLiteral("K"), tau_s_);
+        lags << QStringLiteral("%1 through a lag of %2")
+                    .arg(channels_[qsizetype(lagged_)], arx::minutesOrHours(tau_s_));
+    }
+    if (heatExponent_ > 0) {
+        const QString speed =
+            heatExponent_ == 1 ? QStringLiteral("speed") : QStringLiteral("speed²");
+        putLag(speed, column++,
+               heatExponent_ == 1 ? QStringLiteral("krpm") : QStringLiteral("krpm²"), heatTau_s_);
+        lags << QStringLiteral("the %1 %2 through a lag of %3")
+                    .arg(
+                        positionDependent ? QStringLiteral("screw's") : QStringLiteral("spindle's"),
+                        speed, arx::minutesOrHours(heatTau_s_));
     }
     if (!positionDependent) put(QStringLiteral("c"), features, QStringLiteral("µm"));
     summary.metrics[QStringLiteral("cv_rms_um")] = best;
     summary.metrics[QStringLiteral("r2")] = rSquared(fit.rss, observed);
-    summary.notes << (lagged_ >= 0
-                          ? QStringLiteral("every rise (%1 channels), and %2 through a "
-                                           "lag of %3, by cross-validation (RMS %4 µm; "
-                                           "%5 µm without the lag)")
+    if (!heatNote.isEmpty()) summary.notes << heatNote;
+    summary.notes << (lags.isEmpty()
+                          ? QStringLiteral("every rise (%1 channels); no lag lowered the "
+                                           "cross-validated RMS by 2 % (%2 µm)")
                                 .arg(channels_.size())
-                                .arg(channels_[qsizetype(lagged_)], arx::minutesOrHours(tau_s_))
                                 .arg(best, 0, 'g', 3)
-                                .arg(withoutLag, 0, 'g', 3)
-                          : QStringLiteral("every rise (%1 channels); no lagged rise "
-                                           "lowered the cross-validated RMS by 2 % (%2 µm)")
+                          : QStringLiteral("every rise (%1 channels), and %2, by "
+                                           "cross-validation (RMS %3 µm; %4 µm without a lag)")
                                 .arg(channels_.size())
-                                .arg(best, 0, 'g', 3));
+                                .arg(lags.join(QStringLiteral(" and ")))
+                                .arg(best, 0, 'g', 3)
+                                .arg(withoutLag, 0, 'g', 3));
     summary.inputs = channels_;
     return summary;
 }
 
 Eigen::VectorXd AllRisesLagModel::predictRun(const RunData& run,
                                              const std::vector<PredictionPoint>& at) const {
-    return design(run, at, lagged_, tau_s_) * coefficients_;
+    return design(run, at) * coefficients_;
 }
 
 }  // namespace driftlab::models

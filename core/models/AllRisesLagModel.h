@@ -1,15 +1,19 @@
 #pragma once
-// `arx-all`: least squares on every temperature rise, plus one rise through a
-// first-order lag,
-//   drift channel:     E(t)   = Σ_k a_k·ΔT_k(t) + g·L_τ[ΔT_j](t) + c
+// `arx-all`: least squares on every temperature rise, plus one rise and the
+// drive's heat through first-order lags,
+//   drift channel:     E(t)   = Σ_k a_k·ΔT_k(t) + g·L_τ[ΔT_j](t) + q·L_τq[n^p](t) + c
 //   positioning error: E(x,t) = Σ_k ΔT_k·(a_k + b_k·dx) + L_τ[ΔT_j]·(g + h·dx)
-// with dx = x − x_fixed, the lagged sensor j and τ chosen by cross-validation
-// over the training runs (or none). Where many thermometers sit around the
-// heat paths, the parts that move the tool but carry no sensor are, but for
-// one, nearly a weighted sum of their neighbours: all the rises give them
-// statically, where `mlr` and `arx` take three sensors at most; the part that
-// lags them all (a spindle shaft behind its bearings and stator, a column core
-// behind its skin) takes the lag.
+//                               + L_τq[n^p]·(q + r·dx)
+// with dx = x − x_fixed, n the drive's speed (the spindle's, or the screw's
+// for a positioning error) in 1000 rpm, p = 1 or 2; the lagged sensor j and
+// τ, then p and τq, chosen by cross-validation over the training runs (or
+// none). Where many thermometers sit around the heat paths, the parts that
+// move the tool but carry no sensor are, but for one, nearly a weighted sum
+// of their neighbours: all the rises give them statically, where `mlr` and
+// `arx` take three sensors at most; the part that lags them all (a spindle
+// shaft behind its bearings and stator, a column core behind its skin) takes
+// the lag. A part heated by its own losses (the rotor and shaft) follows its
+// heat source as much as its neighbours: the lagged speed gives that heat.
 
 #include <QStringList>
 #include <vector>
@@ -26,6 +30,10 @@ struct AllRisesLagOptions {
     /// Observations per run the search scores on (evenly thinned, as `arx`'s);
     /// the gains are then fitted on every observation.
     int search_rows_per_run = 400;
+    /// The heat input's lag is searched up to this fraction of the shortest
+    /// training run: a longer one does not settle within the runs, which then
+    /// cannot tell it from a ramp of the energy put in.
+    double max_heat_tau_of_run = 0.25;
 };
 
 class AllRisesLagModel final : public ThermalErrorModel {
@@ -40,15 +48,16 @@ protected:
                                const std::vector<PredictionPoint>& at) const override;
 
 private:
-    /// [every rise, the lagged rise (if any), 1] at the points, with the
-    /// position-gain copies for a positioning error.
-    Eigen::MatrixXd design(const RunData& run, const std::vector<PredictionPoint>& at, int lagged,
-                           double tau_s) const;
+    /// [every rise, the lagged rise and the lagged heat (those chosen), 1] at
+    /// the points, with the position-gain copies for a positioning error.
+    Eigen::MatrixXd design(const RunData& run, const std::vector<PredictionPoint>& at) const;
 
     AllRisesLagOptions options_;
     QStringList channels_;
     int lagged_ = -1;  ///< index in channels_; −1: no lagged rise
     double tau_s_ = 0;
+    int heatExponent_ = 0;  ///< of the drive's speed; 0: no lagged heat input
+    double heatTau_s_ = 0;
     Eigen::VectorXd coefficients_;
 };
 
