@@ -46,15 +46,20 @@ PiecewiseInput heatInput(const RunData& run, int exponent, double until_s) {
 }
 
 /// [rises, lags] with their position gains beside them for a positioning
-/// error (`dx` not empty), else with an offset.
+/// error (`dx` not empty); a drift channel's zeros are added per run (below).
 Eigen::MatrixXd allRisesDesign(const Eigen::MatrixXd& rises, const Eigen::MatrixXd& lags,
                                const Eigen::VectorXd& dx) {
     Eigen::MatrixXd F(rises.rows(), rises.cols() + lags.cols());
     F << rises, lags;
-    if (dx.size() > 0) return withPositionGain(F, dx);
-    Eigen::MatrixXd X(F.rows(), F.cols() + 1);
-    X << F, Eigen::VectorXd::Ones(F.rows());
-    return X;
+    return dx.size() > 0 ? withPositionGain(F, dx) : F;
+}
+
+/// Each row's run, 0…runs−1.
+std::vector<int> runOfEachRow(const std::vector<RunData>& runs) {
+    std::vector<int> runOf;
+    for (std::size_t r = 0; r < runs.size(); ++r)
+        runOf.insert(runOf.end(), runs[r].observations.size(), int(r));
+    return runOf;
 }
 
 }  // namespace
@@ -150,9 +155,15 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
             inputs.push_back(input(run, arx::lastTime(run.observationPoints())));
         return inputs;
     };
+    const std::vector<int> runOf = runOfEachRow(search);
+    bool commonZero = false;  // of the last candidate scored
     auto scoreWith = [&](const Eigen::MatrixXd& lags) {
         if (cancelRequested()) throw ModelError(QStringLiteral("model 'arx-all': fit cancelled"));
-        return crossValidatedRms(allRisesDesign(everyRise, lags, dx), y, folds);
+        const Eigen::MatrixXd F = allRisesDesign(everyRise, lags, dx);
+        if (positionDependent) return crossValidatedRms(F, y, folds);
+        const arx::SetScore score = arx::crossValidatedWithRunZeros(F, y, folds, runOf);
+        commonZero = score.commonZero;
+        return score.rms_um;
     };
 
     // Step 1, the lagged rise. A channel within its noise lagged by hours
@@ -227,18 +238,36 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
             }
         }
 
-    const Eigen::MatrixXd X = stackRows(
+    // Whether a drift channel's prediction takes the training runs' mean zero
+    // (as for `arx`): the cross-validation of the lags chosen says.
+    {
+        Eigen::MatrixXd chosen(everyRise.rows(), 0);
+        auto add = [&](const Eigen::VectorXd& column) {
+            chosen.conservativeResize(Eigen::NoChange, chosen.cols() + 1);
+            chosen.rightCols(1) = column;
+        };
+        if (bestRiseLag.size() > 0) add(bestRiseLag);
+        if (heatExponent_ > 0)
+            add(lagColumn(heatInputs[std::size_t(heatExponent_ - 1)], heatTau_s_));
+        scoreWith(chosen);
+    }
+
+    Eigen::MatrixXd X = stackRows(
         training, [&](const RunData& run) { return design(run, run.observationPoints()); });
+    const Eigen::Index gains = X.cols();
+    if (!positionDependent) X = arx::withRunZeros(X, runOfEachRow(training), int(training.size()));
     const Eigen::VectorXd observed = stackRows(training, &RunData::observedErrors);
     const LeastSquaresFit fit = solveLeastSquares(X, observed);
-    coefficients_ = fit.coefficients;
+    coefficients_ = fit.coefficients.head(gains);
+    offset_um_ =
+        !positionDependent && commonZero ? fit.coefficients.tail(X.cols() - gains).mean() : 0.0;
 
     // Columns: every rise, the lagged rise, the lagged heat, then their
     // position gains or the offset.
     const auto rises = Eigen::Index(channels_.size());
     const Eigen::Index features = rises + (lagged_ >= 0 ? 1 : 0) + (heatExponent_ > 0 ? 1 : 0);
     auto put = [&](const QString& key, Eigen::Index column, const QString& unit) {
-        summary.parameters[key] = {coefficients_[column], fit.sigma[column], unit};
+        summary.parameters[key] = {fit.coefficients[column], fit.sigma[column], unit};
     };
     auto putLag = [&](const QString& name, Eigen::Index column, const QString& perUnit,
                       double tau_s) {
@@ -272,7 +301,7 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
                         positionDependent ? QStringLiteral("screw's") : QStringLiteral("spindle's"),
                         speed, arx::minutesOrHours(heatTau_s_));
     }
-    if (!positionDependent) put(QStringLiteral("c"), features, QStringLiteral("µm"));
+    if (!positionDependent) arx::reportRunZeros(summary, fit, features, training, commonZero);
     summary.metrics[QStringLiteral("cv_rms_um")] = best;
     summary.metrics[QStringLiteral("r2")] = rSquared(fit.rss, observed);
     if (!heatNote.isEmpty()) summary.notes << heatNote;
@@ -293,7 +322,7 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
 
 Eigen::VectorXd AllRisesLagModel::predictRun(const RunData& run,
                                              const std::vector<PredictionPoint>& at) const {
-    return design(run, at) * coefficients_;
+    return (design(run, at) * coefficients_).array() + offset_um_;
 }
 
 }  // namespace driftlab::models

@@ -58,7 +58,8 @@ private:
     double tau_s_ = 0;
     int heatExponent_ = 0;  ///< of the drive's speed; 0: no lagged heat input
     double heatTau_s_ = 0;
-    Eigen::VectorXd coefficients_;
+    Eigen::VectorXd coefficients_;  ///< the gains; a drift channel's run zeros apart
+    double offset_um_ = 0;          ///< a drift channel's predicted offset
 };
 
 }  // namespace driftlab::models

@@ -165,28 +165,8 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
                                  .arg(s, arx::minutesOrHours(inputs_[k].tau_s));
         summary.inputs << s;
     }
-    if (!positionDependent) {
-        double variance = 0;
-        for (std::size_t r = 0; r < training.size(); ++r) {
-            const Eigen::Index z = m + Eigen::Index(r);
-            summary.parameters[QStringLiteral("zero.") + training[r].run_id] = {
-                fit.coefficients[z], fit.sigma[z], QStringLiteral("µm")};
-            variance += fit.sigma[z] * fit.sigma[z];
-        }
-        if (sets[pick].score.commonZero) {
-            summary.parameters[QStringLiteral("c")] = {
-                commonZero_um_, std::sqrt(variance) / double(training.size()),
-                QStringLiteral("µm")};
-            summary.notes << QStringLiteral(
-                "each training run's zero fitted apart; a prediction takes their mean (c), "
-                "which cross-validation preferred to none");
-        } else {
-            summary.notes << QStringLiteral(
-                "each training run's zero fitted apart; a prediction takes none (its inputs "
-                "are zero where the drift's zero was taken), which cross-validation "
-                "preferred to their mean");
-        }
-    }
+    if (!positionDependent)
+        arx::reportRunZeros(summary, fit, m, training, sets[pick].score.commonZero);
     summary.metrics[QStringLiteral("cv_rms_um")] = scores[pick];
     summary.metrics[QStringLiteral("best_single_cv_rms_um")] = scores.front();
     summary.metrics[QStringLiteral("r2")] = rSquared(fit.rss, y);

@@ -96,6 +96,67 @@ Eigen::MatrixXd withRunZeros(const Eigen::MatrixXd& X, const std::vector<int>& r
     return Z;
 }
 
+Eigen::MatrixXd withZerosOfTheirRuns(const Eigen::MatrixXd& X, const std::vector<int>& runOfRow,
+                                     const std::vector<Eigen::Index>& rows) {
+    std::vector<int> compact(rows.size()), seen;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const int run = runOfRow[std::size_t(rows[i])];
+        auto at = std::find(seen.begin(), seen.end(), run);
+        if (at == seen.end()) at = seen.insert(seen.end(), run);
+        compact[i] = int(at - seen.begin());
+    }
+    return withRunZeros(X, compact, int(seen.size()));
+}
+
+void reportRunZeros(FitSummary& summary, const LeastSquaresFit& fit, Eigen::Index first,
+                    const std::vector<RunData>& training, bool commonZero) {
+    double variance = 0;
+    for (std::size_t r = 0; r < training.size(); ++r) {
+        const Eigen::Index z = first + Eigen::Index(r);
+        summary.parameters[QStringLiteral("zero.") + training[r].run_id] = {
+            fit.coefficients[z], fit.sigma[z], QStringLiteral("µm")};
+        variance += fit.sigma[z] * fit.sigma[z];
+    }
+    if (commonZero) {
+        summary.parameters[QStringLiteral("c")] = {
+            fit.coefficients.segment(first, Eigen::Index(training.size())).mean(),
+            std::sqrt(variance) / double(training.size()), QStringLiteral("µm")};
+        summary.notes << QStringLiteral(
+            "each training run's zero fitted apart; a prediction takes their mean (c), "
+            "which cross-validation preferred to none");
+    } else {
+        summary.notes << QStringLiteral(
+            "each training run's zero fitted apart; a prediction takes none (its inputs "
+            "are zero where the drift's zero was taken), which cross-validation "
+            "preferred to their mean");
+    }
+}
+
+SetScore crossValidatedWithRunZeros(const Eigen::MatrixXd& F, const Eigen::VectorXd& y,
+                                    const std::vector<int>& folds,
+                                    const std::vector<int>& runOfRow) {
+    const int foldCount = folds.empty() ? 0 : *std::max_element(folds.begin(), folds.end()) + 1;
+    double bare = 0, shifted = 0;
+    for (int f = 0; f < foldCount; ++f) {
+        std::vector<Eigen::Index> train, test;
+        for (std::size_t i = 0; i < folds.size(); ++i)
+            (folds[i] == f ? test : train).push_back(Eigen::Index(i));
+        if (test.empty()) continue;
+        const Eigen::MatrixXd X = withZerosOfTheirRuns(F(train, Eigen::all), runOfRow, train);
+        if (X.rows() <= X.cols()) return {};
+        const LeastSquaresFit fit = solveLeastSquares(X, y(train));
+        if (!fit.full_rank) return {};
+        const Eigen::VectorXd residual =
+            y(test) - F(test, Eigen::all) * fit.coefficients.head(F.cols());
+        bare += residual.squaredNorm();
+        const double zero = fit.coefficients.tail(X.cols() - F.cols()).mean();
+        shifted += (residual.array() - zero).matrix().squaredNorm();
+    }
+    const auto n = double(y.size());
+    if (shifted < bare) return {std::sqrt(shifted / n), true};
+    return {std::sqrt(bare / n), false};
+}
+
 InputSearch::InputSearch(const std::vector<RunData>& training, const QStringList& candidates,
                          const DynamicRegressionOptions& options)
     : positionDependent_(training.front().positionDependent()) {
@@ -218,15 +279,7 @@ Eigen::MatrixXd InputSearch::fitDesign(const std::vector<int>& chosen,
                                        const std::vector<int>& index,
                                        const std::vector<Eigen::Index>& rows) const {
     const Eigen::MatrixXd X = design(chosen, index, rows);
-    if (positionDependent_) return X;
-    std::vector<int> compact(rows.size()), seen;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-        const int run = runOf_[std::size_t(rows[i])];
-        auto at = std::find(seen.begin(), seen.end(), run);
-        if (at == seen.end()) at = seen.insert(seen.end(), run);
-        compact[i] = int(at - seen.begin());
-    }
-    return withRunZeros(X, compact, int(seen.size()));
+    return positionDependent_ ? X : withZerosOfTheirRuns(X, runOf_, rows);
 }
 
 double InputSearch::rss(const std::vector<int>& chosen, const std::vector<int>& index,

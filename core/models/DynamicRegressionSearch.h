@@ -12,6 +12,7 @@
 
 #include "core/models/DynamicRegressionModel.h"
 #include "core/models/FirstOrderLag.h"
+#include "core/models/LeastSquares.h"
 #include "core/models/ThermalErrorData.h"
 
 namespace driftlab::models::arx {
@@ -57,6 +58,24 @@ Eigen::MatrixXd designOf(const Eigen::MatrixXd& features, const Eigen::VectorXd&
 /// or the runs' mean zero where cross-validation finds an offset the runs
 /// share (a model that follows the drift's form only nearly).
 Eigen::MatrixXd withRunZeros(const Eigen::MatrixXd& X, const std::vector<int>& runOfRow, int runs);
+
+/// withRunZeros for the rows `rows` of a design (X holds those rows), their
+/// runs numbered in order of appearance.
+Eigen::MatrixXd withZerosOfTheirRuns(const Eigen::MatrixXd& X, const std::vector<int>& runOfRow,
+                                     const std::vector<Eigen::Index>& rows);
+
+/// A drift channel's `zero.<run>` parameters, whose columns start at `first`,
+/// `c` (their mean) where the prediction takes it, and a note saying which.
+void reportRunZeros(FitSummary& summary, const LeastSquaresFit& fit, Eigen::Index first,
+                    const std::vector<RunData>& training, bool commonZero);
+
+/// A drift channel's cross-validated RMS over `folds` (see
+/// crossValidationFolds) of the design F fitted with each training run's zero
+/// apart (`runOfRow`: each row's run), predicting the held-out rows with no
+/// zero or with the mean of the training runs' zeros, whichever is better.
+SetScore crossValidatedWithRunZeros(const Eigen::MatrixXd& F, const Eigen::VectorXd& y,
+                                    const std::vector<int>& folds,
+                                    const std::vector<int>& runOfRow);
 
 /// The search over sensors and time constants, on a thinned set of rows whose
 /// features are computed once for every grid time constant.

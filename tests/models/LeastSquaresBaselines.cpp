@@ -161,17 +161,19 @@ void AutoAgainstBaselinesTally::add(const AutoAgainstBaselines& a) {
     surely_worse += a.probability_better < 0.05;
     perfect_beats += a.perfectSurelyBeatsBoth();
     beaten_where_perfect_beats += a.perfectSurelyBeatsBoth() && a.beatsBoth();
+    tied += a.tiesTheBetter();
+    tied_where_perfect_beats += a.perfectSurelyBeatsBoth() && a.tiesTheBetter();
 }
 
 void AutoAgainstBaselinesTally::print() const {
     std::printf(
-        "auto beats both baselines on %d of %d; surely (P > 0.95) on %d; a baseline surely "
-        "better on %d\n",
-        beaten, cases, surely_better, surely_worse);
+        "auto beats both baselines on %d of %d (and ties the better within 0.001 µm on %d); "
+        "surely (P > 0.95) on %d; a baseline surely better on %d\n",
+        beaten, cases, tied, surely_better, surely_worse);
     std::printf(
         "a perfect model beats both baselines beyond chance on %d; auto beats both on %d of "
-        "those\n",
-        perfect_beats, beaten_where_perfect_beats);
+        "those (and ties on %d)\n",
+        perfect_beats, beaten_where_perfect_beats, tied_where_perfect_beats);
 }
 
 }  // namespace driftlab::test

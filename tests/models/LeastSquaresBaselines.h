@@ -60,6 +60,11 @@ struct AutoAgainstBaselines {
     HeldOut perfect;
     double probability_perfect_better = 0;
     bool beatsBoth() const { return score.rms_um < baselines.better_um(); }
+    /// Not better, but within 0.001 µm of the better baseline: a hundredth of
+    /// the rig probes' noise, where which one is ahead is the draw's chance.
+    bool tiesTheBetter() const {
+        return !beatsBoth() && score.rms_um < baselines.better_um() + 0.001;
+    }
     bool perfectSurelyBeatsBoth() const { return probability_perfect_better > 0.95; }
 };
 
@@ -78,6 +83,8 @@ struct AutoAgainstBaselinesTally {
     /// Probes where a perfect model beats both baselines beyond chance, and
     /// where `auto` beats both of them there.
     int perfect_beats = 0, beaten_where_perfect_beats = 0;
+    /// Ties (tiesTheBetter), overall and where a perfect model beats both.
+    int tied = 0, tied_where_perfect_beats = 0;
     void add(const AutoAgainstBaselines& a);
     void print() const;
 };
