@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -22,6 +23,15 @@ namespace {
 constexpr double kTrailingLag_s = 1800;
 constexpr std::array<double, 5> kGain_um_per_K{-1.0, 0.6, -0.4, 1.2, -0.8};
 constexpr double kLagGain_um_per_K = -2.0;  ///< of T1's rise through the lag
+
+/// Spindle run SP<n>, the campaign's n-th, sampled every 15 s.
+void addSpindleRun(Campaign& c, double duration_s,
+                   const std::map<QString, test::Profile>& columns) {
+    driftlab::Run run =
+        test::sampledRun(c, QStringLiteral("SP%1").arg(c.runs.size() + 1), duration_s, 15, columns);
+    run.kind = RunKind::Spindle;
+    c.runs.push_back(run);
+}
 
 /// Four spindle runs, five thermometers T1…T5 each heating with its own
 /// time constant, amplitude and end of heating in each run; the z drift is Σ a_k·ΔT_k plus,
@@ -61,10 +71,7 @@ Campaign fiveSensorCampaign(bool lagged, std::array<double, 4> firstMinuteShift_
                          test::lagOfRise(t - 60, tau_s[0], kTrailingLag_s);
             return drift;
         };
-        driftlab::Run run =
-            test::sampledRun(c, QStringLiteral("SP%1").arg(r + 1), 7200, 15, columns);
-        run.kind = RunKind::Spindle;
-        c.runs.push_back(run);
+        addSpindleRun(c, 7200, columns);
     }
     return c;
 }
@@ -229,10 +236,7 @@ Campaign rotorCampaign() {
             for (std::size_t k = 0; k < 4; ++k) drift += kGain_um_per_K[k] * bearing(k, t);
             return drift;
         };
-        driftlab::Run run =
-            test::sampledRun(c, QStringLiteral("SP%1").arg(r + 1), 10800, 15, columns);
-        run.kind = RunKind::Spindle;
-        c.runs.push_back(run);
+        addSpindleRun(c, 10800, columns);
     }
     return c;
 }
