@@ -24,6 +24,24 @@ constexpr double kTrailingLag_s = 1800;
 constexpr std::array<double, 5> kGain_um_per_K{-1.0, 0.6, -0.4, 1.2, -0.8};
 constexpr double kLagGain_um_per_K = -2.0;  ///< of T1's rise through the lag
 
+/// Thermometers T1…Tn on the spindle, the spindle's speed `n_spindle` (when
+/// asked for) and a z drift probe D_z.
+Campaign spindleCampaign(int thermometers, bool speedChannel) {
+    std::vector<std::pair<QString, ChannelRole>> temperatures;
+    for (int k = 1; k <= thermometers; ++k)
+        temperatures.emplace_back(QStringLiteral("T%1").arg(k), ChannelRole::Spindle);
+    Campaign c = test::feedAxisCampaign(temperatures);
+    if (speedChannel) {
+        c.channels.push_back(
+            {QStringLiteral("n_spindle"), Quantity::Speed, ChannelRole::Spindle, {}, {}, {}});
+        c.sample_columns.push_back(QStringLiteral("n_spindle"));
+    }
+    c.channels.push_back(
+        {QStringLiteral("D_z"), Quantity::Displacement, ChannelRole::DriftZ, {}, {}, {}});
+    c.sample_columns.push_back(QStringLiteral("D_z"));
+    return c;
+}
+
 /// Spindle run SP<n>, the campaign's n-th, sampled every 15 s.
 void addSpindleRun(Campaign& c, double duration_s,
                    const std::map<QString, test::Profile>& columns) {
@@ -40,13 +58,7 @@ void addSpindleRun(Campaign& c, double duration_s,
 /// probe reads `firstMinuteShift_um[r]` off in run r's first minute, which
 /// the drift's zero is taken from.
 Campaign fiveSensorCampaign(bool lagged, std::array<double, 4> firstMinuteShift_um = {}) {
-    std::vector<std::pair<QString, ChannelRole>> temperatures;
-    for (int k = 1; k <= 5; ++k)
-        temperatures.emplace_back(QStringLiteral("T%1").arg(k), ChannelRole::Spindle);
-    Campaign c = test::feedAxisCampaign(temperatures);
-    c.channels.push_back(
-        {QStringLiteral("D_z"), Quantity::Displacement, ChannelRole::DriftZ, {}, {}, {}});
-    c.sample_columns.push_back(QStringLiteral("D_z"));
+    Campaign c = spindleCampaign(5, false);
     for (int r = 0; r < 4; ++r) {
         // Each sensor warms with its own time constant and stops warming at
         // its own time (the cooling of T1 ends the runs, so T1 rises
@@ -196,16 +208,7 @@ constexpr std::array<double, 4> kBearingRise_K_per_krpm{0.8, 0.5, 0.3, 0.2};
 /// a static sum of their rises plus a rotor heated by its own losses, ∝ n²,
 /// through a lag of 900 s, which no thermometer sees: −0.05 µm per krpm².
 Campaign rotorCampaign() {
-    std::vector<std::pair<QString, ChannelRole>> temperatures;
-    for (int k = 1; k <= 4; ++k)
-        temperatures.emplace_back(QStringLiteral("T%1").arg(k), ChannelRole::Spindle);
-    Campaign c = test::feedAxisCampaign(temperatures);
-    c.channels.push_back(
-        {QStringLiteral("n_spindle"), Quantity::Speed, ChannelRole::Spindle, {}, {}, {}});
-    c.channels.push_back(
-        {QStringLiteral("D_z"), Quantity::Displacement, ChannelRole::DriftZ, {}, {}, {}});
-    c.sample_columns.insert(c.sample_columns.end(),
-                            {QStringLiteral("n_spindle"), QStringLiteral("D_z")});
+    Campaign c = spindleCampaign(4, true);
     const std::array<Programme, 4> programmes{
         Programme{{6000, 7200}, {0, 3600}},
         Programme{{2000, 3600}, {5000, 3600}, {8000, 3600}},
