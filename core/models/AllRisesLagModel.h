@@ -1,19 +1,19 @@
 #pragma once
-// `arx-all`: least squares on every temperature rise, plus one rise and the
-// drive's heat through first-order lags,
+// `arx-all`: least squares on every temperature rise, plus one rise and, for
+// a drift channel, the spindle's heat through first-order lags,
 //   drift channel:     E(t)   = Σ_k a_k·ΔT_k(t) + g·L_τ[ΔT_j](t) + q·L_τq[n^p](t) + c
 //   positioning error: E(x,t) = Σ_k ΔT_k·(a_k + b_k·dx) + L_τ[ΔT_j]·(g + h·dx)
-//                               + L_τq[n^p]·(q + r·dx)
-// with dx = x − x_fixed, n the drive's speed (the spindle's, or the screw's
-// for a positioning error) in 1000 rpm, p = 1 or 2; the lagged sensor j and
-// τ, then p and τq, chosen by cross-validation over the training runs (or
-// none). Where many thermometers sit around the heat paths, the parts that
-// move the tool but carry no sensor are, but for one, nearly a weighted sum
-// of their neighbours: all the rises give them statically, where `mlr` and
-// `arx` take three sensors at most; the part that lags them all (a spindle
-// shaft behind its bearings and stator, a column core behind its skin) takes
-// the lag. A part heated by its own losses (the rotor and shaft) follows its
-// heat source as much as its neighbours: the lagged speed gives that heat.
+// with dx = x − x_fixed, n the spindle's speed in 1000 rpm, p = 1 or 2; the
+// lagged sensor j and τ, then p and τq (from two training runs on), chosen by
+// cross-validation over the training runs (or none); a drift channel's zero
+// fitted per training run, as for `arx`. Where many thermometers sit around
+// the heat paths, the parts that move the tool but carry no sensor are, but
+// for one, nearly a weighted sum of their neighbours: all the rises give them
+// statically, where `mlr` and `arx` take three sensors at most; the part that
+// lags them all (a spindle shaft behind its bearings and stator, a column core
+// behind its skin) takes the lag. A part heated by its own losses (the rotor
+// and shaft) follows its heat source as much as its neighbours: the lagged
+// speed gives that heat.
 
 #include <QStringList>
 #include <vector>
@@ -56,7 +56,7 @@ private:
     QStringList channels_;
     int lagged_ = -1;  ///< index in channels_; −1: no lagged rise
     double tau_s_ = 0;
-    int heatExponent_ = 0;  ///< of the drive's speed; 0: no lagged heat input
+    int heatExponent_ = 0;  ///< of the spindle's speed; 0: no lagged heat input
     double heatTau_s_ = 0;
     Eigen::VectorXd coefficients_;  ///< the gains; a drift channel's run zeros apart
     double offset_um_ = 0;          ///< a drift channel's predicted offset
