@@ -100,23 +100,9 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     tau_s_ = 0;
     heatExponent_ = 0;
     heatTau_s_ = 0;
-    const QStringList unlogged = unloggedChannels(training);
-    if (!unlogged.isEmpty())
-        summary.notes << QStringLiteral("not logged in the training runs: %1")
-                             .arg(unlogged.join(QStringLiteral(", ")));
-    for (const TemperatureRise& channel : training.front().temperatures) {
-        if (unlogged.contains(channel.channel_id)) continue;
-        try {
-            for (const RunData& run : training)
-                risesAt(run, {channel.channel_id}, run.observationPoints());
-            channels_ << channel.channel_id;
-        } catch (const ModelError& e) {
-            summary.notes << QStringLiteral("left out: %1").arg(e.message);
-        }
-    }
-    if (channels_.isEmpty())
-        throw ModelError(QStringLiteral("model 'arx-all' has no usable temperature channel (%1)")
-                             .arg(summary.notes.join(QStringLiteral("; "))));
+    // Every channel takes part statically; only those that rise above their
+    // noise are lag candidates (below).
+    channels_ = arx::usableChannels(training, QStringLiteral("arx-all"), false, summary);
 
     std::vector<RunData> search;
     for (const RunData& run : training)
@@ -152,24 +138,23 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
         return inputs;
     };
     const std::vector<int> runOf = runOfEachRow(search);
-    bool commonZero = false;  // of the last candidate scored
-    auto scoreWith = [&](const Eigen::MatrixXd& lags) {
+    // A drift channel's score says too whether its prediction takes the
+    // training runs' mean zero (as for `arx`).
+    auto scoreWith = [&](const Eigen::MatrixXd& lags) -> arx::SetScore {
         if (cancelRequested()) throw ModelError(QStringLiteral("model 'arx-all': fit cancelled"));
         const Eigen::MatrixXd F = allRisesDesign(everyRise, lags, dx);
-        if (positionDependent) return crossValidatedRms(F, y, folds);
-        const arx::SetScore score = arx::crossValidatedWithRunZeros(F, y, folds, runOf);
-        commonZero = score.commonZero;
-        return score.rms_um;
+        if (positionDependent) return {crossValidatedRms(F, y, folds), false};
+        return arx::crossValidatedWithRunZeros(F, y, folds, runOf);
     };
 
     // Step 1, the lagged rise. A channel within its noise lagged by hours
     // becomes a slow wander a fit can match by chance (as for `arx`).
-    const double withoutLag = scoreWith(Eigen::MatrixXd(everyRise.rows(), 0));
-    if (!std::isfinite(withoutLag))
+    const arx::SetScore withoutLag = scoreWith(Eigen::MatrixXd(everyRise.rows(), 0));
+    if (!std::isfinite(withoutLag.rms_um))
         throw ModelError(QStringLiteral("model 'arx-all': the training runs are too few to "
                                         "cross-validate every rise (%1 channels)")
                              .arg(channels_.size()));
-    double best = withoutLag;
+    arx::SetScore best = withoutLag;
     Eigen::VectorXd bestRiseLag;
     for (int j = 0; j < int(channels_.size()); ++j) {
         if (!arx::risesAboveItsNoise(training, channels_[j])) continue;
@@ -179,8 +164,8 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
         for (double tau = options_.min_tau_s; tau <= options_.max_tau_s * 1.0001;
              tau *= options_.tau_step) {
             const Eigen::VectorXd lag = lagColumn(inputs, tau);
-            const double cv = scoreWith(lag);
-            if (cv < best) {
+            const arx::SetScore cv = scoreWith(lag);
+            if (cv.rms_um < best.rms_um) {
                 best = cv;
                 lagged_ = j;
                 tau_s_ = tau;
@@ -190,7 +175,7 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     }
     // A lag must earn its place, as a further sensor in `mlr` must: a lower
     // cross-validated RMS by 2 % (a difference at rounding is none).
-    if (simplestNearBest({withoutLag, best}) == 0) {
+    if (simplestNearBest({withoutLag.rms_um, best.rms_um}) == 0) {
         best = withoutLag;
         lagged_ = -1;
         tau_s_ = 0;
@@ -211,7 +196,7 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
         const std::vector<PredictionPoint> at = run.observationPoints();
         shortest_s = std::min(shortest_s, arx::lastTime(at) - at.front().time_s);
     }
-    const double withoutHeat = best;
+    const double withoutHeat = best.rms_um;
     std::vector<std::vector<PiecewiseInput>> heatInputs;  // speed¹, speed²
     QString heatNote;
     if (!positionDependent && training.size() < 2) {
@@ -237,28 +222,14 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
             Eigen::MatrixXd lags(everyRise.rows(), bestRiseLag.size() > 0 ? 2 : 1);
             if (bestRiseLag.size() > 0) lags.col(0) = bestRiseLag;
             lags.rightCols(1) = lagColumn(heatInputs[e], tau);
-            const double cv = scoreWith(lags);
+            const arx::SetScore cv = scoreWith(lags);
             // The same bar as the lagged rise's: 2 % below the RMS without it.
-            if (cv < best && simplestNearBest({withoutHeat, cv}) == 1) {
+            if (cv.rms_um < best.rms_um && simplestNearBest({withoutHeat, cv.rms_um}) == 1) {
                 best = cv;
                 heatExponent_ = int(e) + 1;
                 heatTau_s_ = tau;
             }
         }
-
-    // Whether a drift channel's prediction takes the training runs' mean zero
-    // (as for `arx`): the cross-validation of the lags chosen says.
-    {
-        Eigen::MatrixXd chosen(everyRise.rows(), 0);
-        auto add = [&](const Eigen::VectorXd& column) {
-            chosen.conservativeResize(Eigen::NoChange, chosen.cols() + 1);
-            chosen.rightCols(1) = column;
-        };
-        if (bestRiseLag.size() > 0) add(bestRiseLag);
-        if (heatExponent_ > 0)
-            add(lagColumn(heatInputs[std::size_t(heatExponent_ - 1)], heatTau_s_));
-        scoreWith(chosen);
-    }
 
     Eigen::MatrixXd X = stackRows(
         training, [&](const RunData& run) { return design(run, run.observationPoints()); });
@@ -267,8 +238,9 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     const Eigen::VectorXd observed = stackRows(training, &RunData::observedErrors);
     const LeastSquaresFit fit = solveLeastSquares(X, observed);
     coefficients_ = fit.coefficients.head(gains);
-    offset_um_ =
-        !positionDependent && commonZero ? fit.coefficients.tail(X.cols() - gains).mean() : 0.0;
+    offset_um_ = !positionDependent && best.commonZero
+                     ? fit.coefficients.tail(X.cols() - gains).mean()
+                     : 0.0;
 
     // Columns: every rise, the lagged rise, the lagged heat, then their
     // position gains or the offset.
@@ -307,21 +279,21 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
         lags << QStringLiteral("the spindle's %1 through a lag of %2")
                     .arg(speed, arx::minutesOrHours(heatTau_s_));
     }
-    if (!positionDependent) arx::reportRunZeros(summary, fit, features, training, commonZero);
-    summary.metrics[QStringLiteral("cv_rms_um")] = best;
+    if (!positionDependent) arx::reportRunZeros(summary, fit, features, training, best.commonZero);
+    summary.metrics[QStringLiteral("cv_rms_um")] = best.rms_um;
     summary.metrics[QStringLiteral("r2")] = rSquared(fit.rss, observed);
     if (!heatNote.isEmpty()) summary.notes << heatNote;
     summary.notes << (lags.isEmpty()
                           ? QStringLiteral("every rise (%1 channels); no lag lowered the "
                                            "cross-validated RMS by 2 % (%2 µm)")
                                 .arg(channels_.size())
-                                .arg(best, 0, 'g', 3)
+                                .arg(best.rms_um, 0, 'g', 3)
                           : QStringLiteral("every rise (%1 channels), and %2, by "
                                            "cross-validation (RMS %3 µm; %4 µm without a lag)")
                                 .arg(channels_.size())
                                 .arg(lags.join(QStringLiteral(" and ")))
-                                .arg(best, 0, 'g', 3)
-                                .arg(withoutLag, 0, 'g', 3));
+                                .arg(best.rms_um, 0, 'g', 3)
+                                .arg(withoutLag.rms_um, 0, 'g', 3));
     summary.inputs = channels_;
     return summary;
 }

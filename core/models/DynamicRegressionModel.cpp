@@ -42,32 +42,8 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
             QStringLiteral("model 'arx' needs at least one sensor and a time-constant "
                            "grid of 2 or more points with 0 < min < max"));
     FitSummary summary;
-    QStringList candidates;
-    const QStringList unlogged = unloggedChannels(training);
-    if (!unlogged.isEmpty())
-        summary.notes << QStringLiteral("not logged in the training runs: %1")
-                             .arg(unlogged.join(QStringLiteral(", ")));
-    for (const TemperatureRise& channel : training.front().temperatures) {
-        if (unlogged.contains(channel.channel_id)) continue;
-        if (!risesAboveItsNoise(training, channel.channel_id)) {
-            summary.notes
-                << QStringLiteral("left out: %1 stays within its noise").arg(channel.channel_id);
-            continue;
-        }
-        try {
-            for (const RunData& run : training) {
-                const std::vector<PredictionPoint> at = run.observationPoints();
-                risesAt(run, {channel.channel_id}, at);
-                riseInput(run, channel.channel_id, lastTime(at));
-            }
-            candidates << channel.channel_id;
-        } catch (const ModelError& e) {
-            summary.notes << QStringLiteral("left out: %1").arg(e.message);
-        }
-    }
-    if (candidates.isEmpty())
-        throw ModelError(QStringLiteral("model 'arx' has no usable temperature channel (%1)")
-                             .arg(summary.notes.join(QStringLiteral("; "))));
+    const QStringList candidates =
+        arx::usableChannels(training, QStringLiteral("arx"), true, summary);
 
     // Forward selection: the sensor that most lowers the cross-validated RMS,
     // one at a time; then the simplest set nearly as good as the best.

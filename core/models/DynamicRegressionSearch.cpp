@@ -96,6 +96,37 @@ Eigen::MatrixXd withRunZeros(const Eigen::MatrixXd& X, const std::vector<int>& r
     return Z;
 }
 
+QStringList usableChannels(const std::vector<RunData>& training, const QString& model,
+                           bool aboveNoise, FitSummary& summary) {
+    QStringList usable;
+    const QStringList unlogged = unloggedChannels(training);
+    if (!unlogged.isEmpty())
+        summary.notes << QStringLiteral("not logged in the training runs: %1")
+                             .arg(unlogged.join(QStringLiteral(", ")));
+    for (const TemperatureRise& channel : training.front().temperatures) {
+        if (unlogged.contains(channel.channel_id)) continue;
+        if (aboveNoise && !risesAboveItsNoise(training, channel.channel_id)) {
+            summary.notes
+                << QStringLiteral("left out: %1 stays within its noise").arg(channel.channel_id);
+            continue;
+        }
+        try {
+            for (const RunData& run : training) {
+                const std::vector<PredictionPoint> at = run.observationPoints();
+                risesAt(run, {channel.channel_id}, at);
+                riseInput(run, channel.channel_id, lastTime(at));
+            }
+            usable << channel.channel_id;
+        } catch (const ModelError& e) {
+            summary.notes << QStringLiteral("left out: %1").arg(e.message);
+        }
+    }
+    if (usable.isEmpty())
+        throw ModelError(QStringLiteral("model '%1' has no usable temperature channel (%2)")
+                             .arg(model, summary.notes.join(QStringLiteral("; "))));
+    return usable;
+}
+
 Eigen::MatrixXd withZerosOfTheirRuns(const Eigen::MatrixXd& X, const std::vector<int>& runOfRow,
                                      const std::vector<Eigen::Index>& rows) {
     std::vector<int> compact(rows.size()), seen;

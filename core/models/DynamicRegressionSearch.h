@@ -37,6 +37,14 @@ PiecewiseInput riseInput(const RunData& run, const QString& channel, double unti
 /// heat; lagged, its noise becomes a slow wander that a fit can match by chance.
 bool risesAboveItsNoise(const std::vector<RunData>& training, const QString& channel);
 
+/// The training runs' temperature channels a lag model can use: logged in
+/// every run, with a rise and a lag input at every observation, and with
+/// `aboveNoise` rising above its noise (risesAboveItsNoise); a note in
+/// `summary` for each left out. Throws ModelError naming `model` when none is
+/// left.
+QStringList usableChannels(const std::vector<RunData>& training, const QString& model,
+                           bool aboveNoise, FitSummary& summary);
+
 /// A time constant as a note gives it: "25 min", or "2.0 h" from 1.5 h on.
 QString minutesOrHours(double tau_s);
 
