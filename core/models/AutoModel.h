@@ -1,7 +1,8 @@
 #pragma once
 // `fit --model auto`: chooses the model family, and with it the inputs, by
-// cross-validation over the training runs only (leave one run out; with a
-// single run, fit on its first 70 % and score on the rest), refits on all
+// cross-validation over the training runs only (each run left out in turn,
+// and every run's first 70 % of time fitted to score the rest; with a single
+// run, the latter alone), refits on all
 // training runs and says what it chose and what the others scored. The
 // families within one standard error of the best score are equally good on
 // these runs (a few runs rank close families partly by chance): auto predicts
