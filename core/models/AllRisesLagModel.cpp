@@ -26,12 +26,6 @@ RunData thinned(const RunData& run, int rows) {
     return part;
 }
 
-std::vector<double> timesOf(const std::vector<PredictionPoint>& at) {
-    std::vector<double> times;
-    for (const PredictionPoint& p : at) times.push_back(p.time_s);
-    return times;
-}
-
 constexpr double kRadPerSPerKrpm = 2 * std::numbers::pi * 1000 / 60;
 
 /// The spindle's speed in 1000 rpm raised to `exponent`.
@@ -74,7 +68,7 @@ QString AllRisesLagModel::describe() const {
 Eigen::MatrixXd AllRisesLagModel::design(const RunData& run,
                                          const std::vector<PredictionPoint>& at) const {
     const double until = arx::lastTime(at);
-    const std::vector<double> times = timesOf(at);
+    const std::vector<double> times = arx::timesOf(at);
     Eigen::MatrixXd lags(Eigen::Index(at.size()), 0);
     auto add = [&](const Eigen::VectorXd& column) {
         lags.conservativeResize(Eigen::NoChange, lags.cols() + 1);
@@ -119,13 +113,15 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
         dx = stackRows(search, [](const RunData& run) {
             return positionsFromFixedEnd(run, run.observationPoints());
         });
-    // Each input's response over the search rows (the input built once per run).
+    // Each input's response over the search rows (the input built once per
+    // run, and each run's times taken once for every input and lag).
+    std::vector<std::vector<double>> searchTimes;
+    for (const RunData& run : search) searchTimes.push_back(arx::timesOf(run.observationPoints()));
     auto lagColumn = [&](const std::vector<PiecewiseInput>& inputs, double tau_s) {
         Eigen::VectorXd lag(everyRise.rows());
         Eigen::Index at = 0;
         for (std::size_t r = 0; r < search.size(); ++r) {
-            const Eigen::VectorXd part =
-                lagResponse(inputs[r], tau_s, timesOf(search[r].observationPoints()));
+            const Eigen::VectorXd part = lagResponse(inputs[r], tau_s, searchTimes[r]);
             lag.segment(at, part.size()) = part;
             at += part.size();
         }

@@ -19,6 +19,7 @@ using arx::lastTime;
 using arx::riseInput;
 using arx::risesAboveItsNoise;
 using arx::SetScore;
+using arx::timesOf;
 using arx::withRunZeros;
 
 }  // namespace
@@ -156,8 +157,7 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
 
 Eigen::MatrixXd DynamicRegressionModel::features(const RunData& run,
                                                  const std::vector<PredictionPoint>& at) const {
-    std::vector<double> times;
-    for (const PredictionPoint& p : at) times.push_back(p.time_s);
+    const std::vector<double> times = timesOf(at);
     Eigen::MatrixXd F(Eigen::Index(at.size()), 2 * Eigen::Index(inputs_.size()));
     for (std::size_t k = 0; k < inputs_.size(); ++k) {
         F.col(2 * Eigen::Index(k)) = risesAt(run, {inputs_[k].channel}, at).col(0);

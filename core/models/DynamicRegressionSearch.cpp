@@ -84,6 +84,13 @@ double lastTime(const std::vector<PredictionPoint>& at) {
     return last;
 }
 
+std::vector<double> timesOf(const std::vector<PredictionPoint>& at) {
+    std::vector<double> times;
+    times.reserve(at.size());
+    for (const PredictionPoint& p : at) times.push_back(p.time_s);
+    return times;
+}
+
 Eigen::MatrixXd designOf(const Eigen::MatrixXd& features, const Eigen::VectorXd& dx,
                          bool positionDependent) {
     return positionDependent ? withPositionGain(features, dx) : features;
@@ -214,8 +221,7 @@ InputSearch::InputSearch(const std::vector<RunData>& training, const QStringList
         }
         offset += all.size();
         ++runIndex;
-        std::vector<double> times;
-        for (const PredictionPoint& p : kept) times.push_back(p.time_s);
+        const std::vector<double> times = timesOf(kept);
         for (qsizetype j = 0; j < candidates.size(); ++j) {
             append(raw[std::size_t(j)], risesAt(run, {candidates[j]}, kept).col(0));
             const PiecewiseInput input = riseInput(run, candidates[j], lastTime(kept));

@@ -51,6 +51,9 @@ QString minutesOrHours(double tau_s);
 /// The latest of the points' times (0 for none).
 double lastTime(const std::vector<PredictionPoint>& at);
 
+/// The points' times, in their order (the times a lag response is read at).
+std::vector<double> timesOf(const std::vector<PredictionPoint>& at);
+
 /// Columns [ΔT, L_τ[ΔT]] per input, position-gain copies beside them for a
 /// positioning error.
 Eigen::MatrixXd designOf(const Eigen::MatrixXd& features, const Eigen::VectorXd& dx,
