@@ -238,44 +238,9 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
                      ? fit.coefficients.tail(X.cols() - gains).mean()
                      : 0.0;
 
-    // Columns: every rise, the lagged rise, the lagged heat, then their
-    // position gains or the offset.
-    const auto rises = Eigen::Index(channels_.size());
-    const Eigen::Index features = rises + (lagged_ >= 0 ? 1 : 0) + (heatExponent_ > 0 ? 1 : 0);
-    auto put = [&](const QString& key, Eigen::Index column, const QString& unit) {
-        summary.parameters[key] = {fit.coefficients[column], fit.sigma[column], unit};
-    };
-    auto putLag = [&](const QString& name, Eigen::Index column, const QString& perUnit,
-                      double tau_s) {
-        put(name + QStringLiteral(".a_lag"), column, QStringLiteral("µm/%1").arg(perUnit));
-        if (positionDependent)
-            put(name + QStringLiteral(".b_lag"), features + column,
-                QStringLiteral("µm/(%1·mm)").arg(perUnit));
-        // The grid step sets how well τ is known; no 1σ is claimed for it.
-        summary.parameters[name + QStringLiteral(".tau")] = {
-            tau_s, std::numeric_limits<double>::quiet_NaN(), QStringLiteral("s")};
-    };
-    for (Eigen::Index k = 0; k < rises; ++k) {
-        put(channels_[k] + QStringLiteral(".a"), k, QStringLiteral("µm/K"));
-        if (positionDependent)
-            put(channels_[k] + QStringLiteral(".b"), features + k, QStringLiteral("µm/(K·mm)"));
-    }
-    Eigen::Index column = rises;
-    QStringList lags;
-    if (lagged_ >= 0) {
-        putLag(channels_[qsizetype(lagged_)], column++, QStringLiteral("K"), tau_s_);
-        lags << QStringLiteral("%1 through a lag of %2")
-                    .arg(channels_[qsizetype(lagged_)], arx::minutesOrHours(tau_s_));
-    }
-    if (heatExponent_ > 0) {
-        const QString speed =
-            heatExponent_ == 1 ? QStringLiteral("speed") : QStringLiteral("speed²");
-        putLag(speed, column++,
-               heatExponent_ == 1 ? QStringLiteral("krpm") : QStringLiteral("krpm²"), heatTau_s_);
-        lags << QStringLiteral("the spindle's %1 through a lag of %2")
-                    .arg(speed, arx::minutesOrHours(heatTau_s_));
-    }
-    if (!positionDependent) arx::reportRunZeros(summary, fit, features, training, best.commonZero);
+    const QStringList lags = reportGains(summary, fit, positionDependent);
+    if (!positionDependent)
+        arx::reportRunZeros(summary, fit, features(), training, best.commonZero);
     summary.metrics[QStringLiteral("cv_rms_um")] = best.rms_um;
     summary.metrics[QStringLiteral("r2")] = rSquared(fit.rss, observed);
     if (!heatNote.isEmpty()) summary.notes << heatNote;
@@ -292,6 +257,47 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
                                 .arg(withoutLag.rms_um, 0, 'g', 3));
     summary.inputs = channels_;
     return summary;
+}
+
+QStringList AllRisesLagModel::reportGains(FitSummary& summary, const LeastSquaresFit& fit,
+                                          bool positionDependent) const {
+    // Columns: every rise, the lagged rise, the lagged heat, then their
+    // position gains or the offset.
+    const auto rises = Eigen::Index(channels_.size());
+    auto put = [&](const QString& key, Eigen::Index column, const QString& unit) {
+        summary.parameters[key] = {fit.coefficients[column], fit.sigma[column], unit};
+    };
+    auto putLag = [&](const QString& name, Eigen::Index column, const QString& perUnit,
+                      double tau_s) {
+        put(name + QStringLiteral(".a_lag"), column, QStringLiteral("µm/%1").arg(perUnit));
+        if (positionDependent)
+            put(name + QStringLiteral(".b_lag"), features() + column,
+                QStringLiteral("µm/(%1·mm)").arg(perUnit));
+        // The grid step sets how well τ is known; no 1σ is claimed for it.
+        summary.parameters[name + QStringLiteral(".tau")] = {
+            tau_s, std::numeric_limits<double>::quiet_NaN(), QStringLiteral("s")};
+    };
+    for (Eigen::Index k = 0; k < rises; ++k) {
+        put(channels_[k] + QStringLiteral(".a"), k, QStringLiteral("µm/K"));
+        if (positionDependent)
+            put(channels_[k] + QStringLiteral(".b"), features() + k, QStringLiteral("µm/(K·mm)"));
+    }
+    Eigen::Index column = rises;
+    QStringList lags;
+    if (lagged_ >= 0) {
+        putLag(channels_[qsizetype(lagged_)], column++, QStringLiteral("K"), tau_s_);
+        lags << QStringLiteral("%1 through a lag of %2")
+                    .arg(channels_[qsizetype(lagged_)], arx::minutesOrHours(tau_s_));
+    }
+    if (heatExponent_ > 0) {
+        const QString speed =
+            heatExponent_ == 1 ? QStringLiteral("speed") : QStringLiteral("speed²");
+        putLag(speed, column++,
+               heatExponent_ == 1 ? QStringLiteral("krpm") : QStringLiteral("krpm²"), heatTau_s_);
+        lags << QStringLiteral("the spindle's %1 through a lag of %2")
+                    .arg(speed, arx::minutesOrHours(heatTau_s_));
+    }
+    return lags;
 }
 
 Eigen::VectorXd AllRisesLagModel::predictRun(const RunData& run,

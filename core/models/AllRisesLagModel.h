@@ -22,6 +22,8 @@
 
 namespace driftlab::models {
 
+struct LeastSquaresFit;
+
 struct AllRisesLagOptions {
     double min_tau_s = 60;
     double max_tau_s = 8 * 3600;
@@ -51,6 +53,15 @@ private:
     /// [every rise, the lagged rise and the lagged heat (those chosen), 1] at
     /// the points, with the position-gain copies for a positioning error.
     Eigen::MatrixXd design(const RunData& run, const std::vector<PredictionPoint>& at) const;
+    /// The gains per position (every rise, then the lags chosen).
+    Eigen::Index features() const {
+        return Eigen::Index(channels_.size()) + (lagged_ >= 0 ? 1 : 0) +
+               (heatExponent_ > 0 ? 1 : 0);
+    }
+    /// Puts every fitted gain and time constant into the summary; returns the
+    /// lags chosen, described for the note.
+    QStringList reportGains(FitSummary& summary, const LeastSquaresFit& fit,
+                            bool positionDependent) const;
 
     AllRisesLagOptions options_;
     QStringList channels_;
