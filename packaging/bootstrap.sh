@@ -83,7 +83,7 @@ run_main_job() {
     log "main job 2/18: acquisition: ISO 230-3 thermal distortion of the moving axis (warm-up until two passes agree within 1 µm, then cool-down) logged live; its drift evaluation and a model fitted on it"
     logged=$("$cli" run --procedure "$procedures/iso230-3-x-axis.json" --rig sim --db "$out/driftlab.sqlite")
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$logged" | tail -n 3
-    "$cli" fit --db "$out/driftlab.sqlite" --campaign "$logged" --model heat-transfer | tail -n 1
+    "$cli" fit --db "$out/driftlab.sqlite" --campaign "$logged" --model heat-transfer | sed -n '/score on/,$p'
     log "main job 3/18: simulating a five-state campaign on the built-in rig, with six ISO 230-3 spindle runs of different speed programmes"
     "$cli" simulate --out "$out/campaign" --plots "$out/plots" --spindle-runs 6 --seed 1 >/dev/null
     log "main job 4/18: zipping the bundle as a user mails it, importing the zip into the same store (checked, then one transaction)"
@@ -99,7 +99,7 @@ run_main_job() {
     "$cli" health --db "$out/driftlab.sqlite" --campaign "$id"
     log "main job 5/18: heat-transfer model identified on S1, tested on S2-S5 (stored in the database)"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model heat-transfer --train S1
-    log "main job 6/18: the same with the best temperature regression (mlr)"
+    log "main job 6/18: the same with the best temperature regression (mlr); below each score, the channels where S2-S5 leave S1's temperature rises: a regression extrapolates there, the physics model holds"
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model mlr --train S1
     log "main job 7/18: every model, fitted on each state and scored on every other"
     "$cli" compare --db "$out/driftlab.sqlite" --campaign "$id"
@@ -118,7 +118,7 @@ run_main_job() {
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model auto --target D_z \
         --train SP1,SP2,SP3 --test SP4,SP5,SP6
     "$cli" fit --db "$out/driftlab.sqlite" --campaign "$id" --model mlr --target D_z \
-        --train SP1,SP2,SP3 --test SP4,SP5,SP6 | tail -n 1
+        --train SP1,SP2,SP3 --test SP4,SP5,SP6 | sed -n '/score on/,$p'
     log "main job 11/18: compensation tables from S1's interferometer readings for LinuxCNC and Sinumerik, in $out/compensation/"
     mkdir -p "$out/compensation"
     "$cli" compensate --db "$out/driftlab.sqlite" --campaign "$id" --run S1 --format linuxcnc \

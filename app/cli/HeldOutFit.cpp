@@ -30,6 +30,14 @@ QJsonObject HeldOutFit::json() const {
     const QJsonObject& metrics = record.metrics;
     QJsonObject scored = db::scoreJson(score);
     scored[QStringLiteral("runs")] = QJsonArray::fromStringList(scoredRuns());
+    QJsonArray beyond;
+    for (const models::RiseBeyondTraining& b : beyondTraining)
+        beyond.append(QJsonObject{{QStringLiteral("run"), b.run},
+                                  {QStringLiteral("channel"), b.channel},
+                                  {QStringLiteral("role"), toString(b.role)},
+                                  {QStringLiteral("rise_K"), b.rise_K},
+                                  {QStringLiteral("training_low_K"), b.training_low_K},
+                                  {QStringLiteral("training_high_K"), b.training_high_K}});
     return {{QStringLiteral("model"), model->name()},
             {QStringLiteral("train_runs"), QJsonArray::fromStringList(trainRuns)},
             {QStringLiteral("test_runs"), QJsonArray::fromStringList(testRuns)},
@@ -37,6 +45,7 @@ QJsonObject HeldOutFit::json() const {
             {QStringLiteral("score_kind"), metrics[QStringLiteral("score_kind")].toString()},
             {QStringLiteral("score"), scored},
             {QStringLiteral("test"), heldOut() ? db::scoreJson(score) : QJsonObject()},
+            {QStringLiteral("beyond_training"), beyond},
             {QStringLiteral("fit"),
              QJsonObject{{QStringLiteral("message"), fit.message},
                          {QStringLiteral("rms_um"), jsonNumber(fit.rms_um)},
@@ -68,15 +77,18 @@ HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
 
     const QString label = QStringLiteral("fitting ") + r.model->name();
     if (progress) printProgress(label, 0);
-    r.fit = r.model->fit(modelDataset(campaign, r.trainRuns, target));
+    const std::vector<models::RunData> training = modelDataset(campaign, r.trainRuns, target);
+    r.fit = r.model->fit(training);
     if (progress) printProgress(label, 1);
     if (!r.fit.success) throw CliError(r.fit.message);
 
     // With no run left out (one run, or --test with none) the only score there
     // is comes from the training runs: it is labelled so, and never stands
     // where a script or the database expects a held-out score.
-    r.score = models::scoreModel(*r.model, modelDataset(campaign, r.scoredRuns(), target));
+    const std::vector<models::RunData> scored = modelDataset(campaign, r.scoredRuns(), target);
+    r.score = models::scoreModel(*r.model, scored);
     if (!r.score.ok()) throw CliError(r.score.error);
+    if (r.heldOut()) r.beyondTraining = models::risesBeyondTraining(training, scored);
     r.record = db::modelFitRecord(r.model->name(), target, r.trainRuns, r.testRuns, r.fit, r.score);
     return r;
 }

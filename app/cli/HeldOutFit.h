@@ -10,6 +10,7 @@
 #include "core/domain/Campaign.h"
 #include "core/models/ModelScore.h"
 #include "core/models/ThermalErrorModel.h"
+#include "core/models/TrainingEnvelope.h"
 #include "db/ModelFitStore.h"
 
 namespace driftlab::cli {
@@ -27,12 +28,16 @@ struct HeldOutFit {
     QStringList testRuns;  ///< empty: no run held out, the score is a training score
     models::FitSummary fit;
     models::Score score;
+    /// Where the held-out runs' temperatures leave the training runs' (the
+    /// score there is an extrapolation's); empty without a held-out run.
+    std::vector<models::RiseBeyondTraining> beyondTraining;
     db::ModelFitRecord record;  ///< as the store keeps it
 
     bool heldOut() const { return !testRuns.isEmpty(); }
     /// The runs the score is on: the test runs, or the training runs when none is held out.
     QStringList scoredRuns() const { return heldOut() ? testRuns : trainRuns; }
-    /// `fit --json`: model, runs, parameters, score kind, score, test, fit.
+    /// `fit --json`: model, runs, parameters, score kind, score, test,
+    /// beyond_training, fit.
     QJsonObject json() const;
 };
 

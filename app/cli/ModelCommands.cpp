@@ -79,6 +79,13 @@ int fitCommand(const QStringList& args) {
                   .arg(score.rms_um, 0, 'f', 2)
                   .arg(score.peak_um, 0, 'f', 2)
                   .arg(100 * score.reduction, 0, 'f', 1));
+    const QStringList beyond = models::describeRisesBeyondTraining(r.beyondTraining);
+    if (!beyond.isEmpty()) {
+        printLine(
+            QStringLiteral("beyond the training runs' temperature rises (the prediction "
+                           "extrapolates there):"));
+        for (const QString& line : beyond) printLine(QStringLiteral("  ") + line);
+    }
     return 0;
 }
 

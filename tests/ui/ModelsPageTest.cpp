@@ -99,6 +99,16 @@ TEST(ModelsPage, fitThroughTheWidgetsShowsStoresAndMatchesTheCli) {
         cli[QStringLiteral("test")].toObject()[QStringLiteral("rms_um")].toDouble();
     EXPECT_EQ(page.scoresModel()->index(0, ui::TestScoresModel::Rms).data().toString(),
               QString::number(cliRms, 'f', 2));
+    // S3 runs faster than S1: the notes say where its temperatures leave
+    // S1's, the channel the CLI names first first.
+    const QJsonArray beyond = cli[QStringLiteral("beyond_training")].toArray();
+    ASSERT_FALSE(beyond.isEmpty());
+    const QString firstChannel = beyond.first().toObject()[QStringLiteral("channel")].toString();
+    EXPECT_TRUE(page.notes().contains(
+        QStringLiteral("\nBeyond the training runs' temperature rises (the prediction "
+                       "extrapolates there): S3: %1 (")
+            .arg(firstChannel)))
+        << page.notes().toStdString();
     QString error;
     auto db = db::CampaignStore::open(store, db::StoreAccess::ReadOnly, &error);
     const auto fits = db::modelFits(*db, 1);

@@ -83,6 +83,7 @@ FitOutcome runFit(const FitRequest& request, JobControl& control) {
         p.predicted_um = model->predict(run).error_um;
         out.runs.push_back(std::move(p));
     }
+    if (out.held_out) out.beyond_training = models::risesBeyondTraining(train.runs, test.runs);
     // The last moment Cancel counts: once stored, the fit is a result.
     if (control.cancelled()) {
         out.cancelled = true;

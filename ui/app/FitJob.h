@@ -13,6 +13,7 @@
 
 #include "core/domain/Campaign.h"
 #include "core/models/ModelScore.h"
+#include "core/models/TrainingEnvelope.h"
 #include "ui/app/BackgroundJob.h"
 
 namespace driftlab::ui {
@@ -57,7 +58,9 @@ struct FitOutcome {
     models::Score pooled;  ///< over every test run; with none, on the training runs
     bool held_out = false;
     std::vector<RunPrediction> runs;  ///< per test run
-    std::optional<qint64> fit_id;     ///< the stored record
+    /// Where the test runs' temperatures leave the training runs'.
+    std::vector<models::RiseBeyondTraining> beyond_training;
+    std::optional<qint64> fit_id;  ///< the stored record
 };
 
 /// Fits, scores per test run and stores the fit (db::storeModelFit) unless

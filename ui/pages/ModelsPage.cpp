@@ -122,6 +122,10 @@ QString ModelsPage::status() const {
     return m_status->text();
 }
 
+QString ModelsPage::notes() const {
+    return m_notes->text();
+}
+
 void ModelsPage::report(const QString& level, const QString& message) {
     m_status->setText(message);
     emit m_session.event(level, QStringLiteral("Models"), message);
@@ -251,8 +255,15 @@ void ModelsPage::showFit(const FitOutcome& outcome, const QString& model) {
             .arg(100 * outcome.pooled.reduction, 0, 'f', 1));
     QStringList notes = outcome.fit.notes;
     if (!outcome.note.isEmpty()) notes << outcome.note;
-    m_notes->setText(notes.isEmpty() ? QString()
-                                     : tr("Notes: ") + notes.join(QStringLiteral("; ")));
+    QStringList shown;
+    if (!notes.isEmpty()) shown << tr("Notes: ") + notes.join(QStringLiteral("; "));
+    // On a line of its own: it qualifies the held-out score above.
+    const QStringList beyond = models::describeRisesBeyondTraining(outcome.beyond_training);
+    if (!beyond.isEmpty())
+        shown << tr("Beyond the training runs' temperature rises (the prediction extrapolates "
+                    "there): %1")
+                     .arg(beyond.join(QStringLiteral("; ")));
+    m_notes->setText(shown.join(QLatin1Char('\n')));
     m_predictions->setPredictions(model, outcome.runs);
     if (outcome.fit_id) {
         report(QStringLiteral("info"), tr("Fitted %1: held-out RMS %2 µm; stored as fit %3.")

@@ -40,6 +40,9 @@ public:
     BackgroundJob* job() const { return m_job; }
     /// The last outcome line ("fitted …", "cancelled", an error).
     QString status() const;
+    /// The last fit's notes as shown: the model's, what was left out, and
+    /// where the test runs leave the training runs' temperature rises.
+    QString notes() const;
     ModelParametersModel* parametersModel() const { return m_parameters; }
     TestScoresModel* scoresModel() const { return m_scores; }
     CrossStateMatrixModel* matrixModel() const { return m_matrix; }
