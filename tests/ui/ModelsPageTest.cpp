@@ -100,7 +100,7 @@ TEST(ModelsPage, fitThroughTheWidgetsShowsStoresAndMatchesTheCli) {
     EXPECT_EQ(page.scoresModel()->index(0, ui::TestScoresModel::Rms).data().toString(),
               QString::number(cliRms, 'f', 2));
     // S3 runs faster than S1: the notes say where its temperatures leave
-    // S1's, the channel the CLI names first first.
+    // S1's, beginning with the channel the CLI names first.
     const QJsonArray beyond = cli[QStringLiteral("beyond_training")].toArray();
     ASSERT_FALSE(beyond.isEmpty());
     const QString firstChannel = beyond.first().toObject()[QStringLiteral("channel")].toString();
