@@ -45,8 +45,7 @@ QString AutoModel::describe() const {
         "family's score.");
 }
 
-AutoModel::CrossValidatedScore AutoModel::crossValidatedRms(
-    const QString& family, const std::vector<RunData>& training) const {
+std::vector<AutoModel::Fold> AutoModel::foldsOf(const std::vector<RunData>& training) {
     // Folds of two kinds. Each run held out in turn scores motion the fit has
     // not seen, but fits on one run fewer: with three runs a family whose
     // strength shows only once every speed programme is in the fit (every
@@ -55,10 +54,6 @@ AutoModel::CrossValidatedScore AutoModel::crossValidatedRms(
     // each run's last 30 % scored (in a warm-up and cool-down test, mostly
     // the cooling): every programme in the fit, time it has not seen. With a
     // single run that is the only fold.
-    struct Fold {
-        std::vector<RunData> fit_on;
-        std::vector<RunData> held_out;
-    };
     std::vector<Fold> folds;
     if (training.size() > 1) {
         for (std::size_t r = 0; r < training.size(); ++r) {
@@ -76,7 +71,11 @@ AutoModel::CrossValidatedScore AutoModel::crossValidatedRms(
         if (!late.observations.empty()) inTime.held_out.push_back(std::move(late));
     }
     if (!inTime.held_out.empty()) folds.push_back(std::move(inTime));
+    return folds;
+}
 
+AutoModel::CrossValidatedScore AutoModel::crossValidatedRms(const QString& family,
+                                                            const std::vector<Fold>& folds) const {
     double squares = 0;
     std::size_t count = 0;
     std::vector<double> foldMeanSquares;
@@ -117,9 +116,10 @@ FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
     chosen_.clear();
     std::vector<double> scores, standardErrors;
     QStringList scored, failed;
+    const std::vector<Fold> folds = foldsOf(training);
     for (const QString& family : familiesSimplestFirst()) {
         try {
-            const CrossValidatedScore score = crossValidatedRms(family, training);
+            const CrossValidatedScore score = crossValidatedRms(family, folds);
             scores.push_back(score.rms_um);
             standardErrors.push_back(score.standard_error_um);
             scored << QStringLiteral("%1 %2 µm").arg(family).arg(scores.back(), 0, 'g', 3);

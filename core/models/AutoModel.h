@@ -35,10 +35,17 @@ private:
         double rms_um;
         double standard_error_um;  ///< over the folds; 0 with a single fold
     };
+    /// Runs to fit on, and runs (or parts of runs) to score on.
+    struct Fold {
+        std::vector<RunData> fit_on;
+        std::vector<RunData> held_out;
+    };
+    /// The folds every family is scored on, built once per fit.
+    static std::vector<Fold> foldsOf(const std::vector<RunData>& training);
     /// RMS of the family's predictions on data it was not fitted on; throws
     /// ModelError with the family's reason when it cannot be fitted.
     CrossValidatedScore crossValidatedRms(const QString& family,
-                                          const std::vector<RunData>& training) const;
+                                          const std::vector<Fold>& folds) const;
     /// The summary of a mean of several families: each one's parameters,
     /// metrics and notes under its name.
     FitSummary combined(const std::vector<FitSummary>& fits) const;

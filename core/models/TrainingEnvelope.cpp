@@ -2,14 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace driftlab::models {
 namespace {
 
 struct Range {
-    double low = 0, high = 0;
-    bool known = false;
+    double low = std::numeric_limits<double>::infinity();
+    double high = -std::numeric_limits<double>::infinity();
 };
 
 const TemperatureRise* findChannel(const RunData& run, const QString& id) {
@@ -43,11 +44,10 @@ std::vector<RiseBeyondTraining> risesBeyondTraining(const std::vector<RunData>& 
                 }
                 const auto [low, high] =
                     std::minmax_element(t->rise_K.value.begin(), t->rise_K.value.end());
-                range.low = range.known ? std::min(range.low, *low) : *low;
-                range.high = range.known ? std::max(range.high, *high) : *high;
-                range.known = true;
+                range.low = std::min(range.low, *low);
+                range.high = std::max(range.high, *high);
             }
-            if (everyRun && range.known) ranges[channel.channel_id] = range;
+            if (everyRun) ranges[channel.channel_id] = range;
         }
 
     std::vector<RiseBeyondTraining> beyond;
