@@ -22,6 +22,23 @@ def fmt(v, nd):
     return "0" if s in ("-0", "") else s
 
 
+def log_blanks(spec, run_id, ts, kinds, has_temp=None):
+    """Empty temperature cells of a logger: holes (spec["log"]["holes"]: every row in
+    [t0_s, t1_s) of a run empty in the channels of `kinds`, as when a module does not
+    answer) and the axis-only rows of a merged log (has_temp False)."""
+    blank = np.zeros((len(ts), len(kinds)), bool)
+    for hole in spec.get("log", {}).get("holes", []):
+        if hole["run"] != run_id:
+            continue
+        rows = (ts >= hole["t0_s"]) & (ts < hole["t1_s"])
+        for j, k in enumerate(kinds):
+            if k in hole["kinds"]:
+                blank[rows, j] = True
+    if has_temp is not None:
+        blank[~has_temp, :] = True
+    return blank
+
+
 def write_bundle(spec, sim, outdir):
     os.makedirs(outdir, exist_ok=True)
     sc = spec["screw"]
@@ -60,11 +77,16 @@ def write_bundle(spec, sim, outdir):
         ts = d["ts"]
         miss = rng.random((len(ts), len(ids))) < noise["missing_fraction"]
         miss[:3] = False
+        miss |= log_blanks(spec, run["id"], ts, kinds, d.get("has_temp"))
+        has_axis = d.get("has_axis")
         cols = [np.round(d["meas"][k], 3) for k in kinds]
         for i in range(len(ts)):
             row = [run["id"], fmt(ts[i], 2)]
             row += ["" if miss[i, j] else fmt(cols[j][i], 3) for j in range(len(ids))]
-            row += [fmt(d["pos_s"][i], 3), fmt(d["vel_s"][i] * 60.0, 1), fmt(d["torque_s"][i], 3)]
+            if has_axis is None or has_axis[i]:
+                row += [fmt(d["pos_s"][i], 3), fmt(d["vel_s"][i] * 60.0, 1), fmt(d["torque_s"][i], 3)]
+            else:
+                row += ["", "", ""]
             lines.append(",".join(row))
     with open(os.path.join(outdir, "samples.csv"), "w", newline="") as f:
         f.write(bom + nl.join(lines) + nl)

@@ -11,6 +11,7 @@ from screwsim import Screw, FVModel, first_order_lag  # noqa: F401
 from motion import moving_run, iso_targets, Drive, nut_heat_per_step  # noqa: F401
 
 from spec import *  # noqa: F401,F403
+from heat_regions import fixed_end_region, bearing_weights, merged_sample_times  # noqa: F401
 
 # ---------------------------------------------------------------------------
 # simulation of one run
@@ -114,12 +115,18 @@ def simulate_campaign(spec, with_effects=True, keep_fields=False):
             pw_f = rs.nut_power_f(ph["c_nut_W_s_rad"])
         q_nut = rs.nut_heat(pw_f)
         Qb = ph["c_b_W_s_rad"] * rs.om_step
-        src = q_nut + Qb[:, None] * (rs.w_fix + rs.w_free)[None, :]
+        if "bearing_asym" in eff:   # per-end bearing law: c_b*f_fix into the fixed end, c_b*f_free into the free end
+            w_b, n_b = bearing_weights(rs.w_fix, rs.w_free, eff["bearing_asym"])
+        else:
+            w_b, n_b = rs.w_fix + rs.w_free, 2
+        src = q_nut + Qb[:, None] * w_b[None, :]
         motor_loss = spec["drive"]["motor_loss_W_Nm2"] * rs.tq2_step   # total motor copper loss (W)
         if "motor_heat" in eff:
             me = eff["motor_heat"]
             q_m = lag_steps(me["k_W_per_Nm2"] * rs.tq2_step, me["tau_s"], 0.0)
-            src = src + q_m[:, None] * rs.w_fix[None, :]
+            # into the fixed bearing's region, or spread over [a, b] mm from the fixed end (bearing + flange)
+            w_m = rs.w_fix if "region_mm" not in me else fixed_end_region(model, sc["fixed_end_mm"], me["region_mm"])
+            src = src + q_m[:, None] * w_m[None, :]
         else:
             q_m = np.zeros(N)
         if "forced_convection" in eff:
@@ -133,7 +140,7 @@ def simulate_campaign(spec, with_effects=True, keep_fields=False):
         T = model.integrate(DT, h, src, tamb_mid, T0)               # (N+1, n)
 
         # --- environment signals (step grid, noise-free) ------------------------
-        p_mach = q_nut.sum(1) + 2 * Qb + motor_loss
+        p_mach = q_nut.sum(1) + n_b * Qb + motor_loss
         amb_b = rs.ambient(rs.t_bounds)
         air = (lag_steps(amb_b, env["air_tau_s"]) + env["air_offset_K"]
                + env["air_gain_K_W"] * lag_bounds(p_mach, env["air_heat_tau_s"])
@@ -147,9 +154,14 @@ def simulate_campaign(spec, with_effects=True, keep_fields=False):
         ts = np.arange(0.0, rs.t_end, smp["period_s"])
         ts[1:] += rng.uniform(-smp["jitter_s"], smp["jitter_s"], len(ts) - 1)
         ts = np.round(ts, 2)
+        has_temp = has_axis = None
+        if "axis_period_s" in smp:   # two devices merged: thermometers at period_s, axis columns at axis_period_s
+            ts, has_temp, has_axis = merged_sample_times(ts, rs.t_end, smp, rng)
         pos_s, vel_s, acc_s = rs.prog.evaluate(ts)
         Ts = rs.interp_steps(T, ts)
         true = {}
+        unlagged = {}
+        lag_of = eff.get("sensor_lag", {})
         for ch in spec["channels"]:
             k = ch["kind"]
             if k == "nut":
@@ -167,13 +179,20 @@ def simulate_campaign(spec, with_effects=True, keep_fields=False):
                         sig[s0:s1] = vals.reshape(-1, rs.r).mean(1)
                     y = lag_steps(sig, lag["tau_s"])
                     true[k] = rs.interp_mid(y, ts)
+                    unlagged[k] = rs.interp_mid(sig, ts)
                 else:
                     true[k] = model.footprint_mean(Ts, pos_s)
             elif k in ("bfix", "bfree"):
                 prof = model.probe(T, ch["position_mm"])
                 if eff.get("sensor_lag", {}).get("channel") == ch["id"]:
+                    unlagged[k] = rs.interp_steps(prof, ts)
                     prof = lag_steps(prof, eff["sensor_lag"]["tau_s"])
                 true[k] = rs.interp_steps(prof, ts)
+            elif k in ("amb", "air", "struct") and lag_of.get("channel") == ch["id"]:
+                # a room, air or structure sensor that follows its medium with a first-order lag
+                sig = {"amb": amb_b, "air": air, "struct": struct}[k]
+                unlagged[k] = rs.interp_steps(sig, ts)
+                true[k] = rs.interp_steps(lag_steps(sig, lag_of["tau_s"]), ts)
             elif k == "amb":
                 true[k] = rs.ambient(ts)
             elif k == "air":
@@ -229,6 +248,8 @@ def simulate_campaign(spec, with_effects=True, keep_fields=False):
         out[run["id"]] = {
             "rs": rs, "ts": ts, "pos_s": pos_s, "vel_s": vel_s, "torque_s": torque_s, "meas": meas,
             "readings": rd, "dev": dev, "E": E, "contrib": contrib, "tr": tr, "xr": xr,
+            "true": true, "unlagged": unlagged, "has_temp": has_temp, "has_axis": has_axis,
+            "air_b": air, "struct_b": struct,
             "summary": {
                 "t_end_s": rs.t_end, "warmup_end_s": rs.warm_end, "cycles": len(rs.prog.cycles),
                 "max_screw_rise_K": float((T - T[0][None, :]).max()),
@@ -251,10 +272,14 @@ def simulate_campaign(spec, with_effects=True, keep_fields=False):
 # ---------------------------------------------------------------------------
 # base-model refit (for ranking effects by what the base model cannot absorb)
 # ---------------------------------------------------------------------------
-def base_refit_residual(spec, target_dev, h_factors=(0.55, 0.7, 0.85, 1.0, 1.2, 1.45, 1.75, 2.1)):
+def base_refit_residual(spec, target_dev, h_factors=(0.55, 0.7, 0.85, 1.0, 1.2, 1.45, 1.75, 2.1), extra=None,
+                        extra_nonneg=False):
     """Fit c_nut, c_b (linear, >= 0) and h (grid) of the BASE model to the thermal error
     part of target_dev (dict run -> deviations, cycle-0 referenced inside) and return
-    the RMS residual (um) and the parameters.  Uses the truth's ambient."""
+    the RMS residual (um) and the parameters.  Uses the truth's ambient.
+    extra: optional dict run -> (readings, m) further columns of free sign (a candidate's
+    output shapes, e.g. an Edlen term of a logged sensor), fitted with the base; with
+    extra_nonneg their coefficients are >= 0 (a heat input)."""
     sc = spec["screw"]
     screw = Screw(sc["length_mm"], sc["diameter_mm"], sc["lead_mm"], sc["fixed_end_mm"], sc["alpha_per_K"],
                   sc["density_kg_m3"], sc["specific_heat_J_kgK"], sc["conductivity_W_mK"], spec["nut_length_mm"])
@@ -286,7 +311,11 @@ def base_refit_residual(spec, target_dev, h_factors=(0.55, 0.7, 0.85, 1.0, 1.2, 
             for j in range(3):
                 Tr = rs.interp_steps(T[:, :, j], tr)
                 cols.append(model.thermal_error_um(Tr - T[0, :, j][None, :], xr))
-            A.append(np.stack(cols[:2], 1))
+            a_run = np.stack(cols[:2], 1)
+            if extra is not None:
+                ex = np.asarray(extra[rs.run["id"]], dtype=float).reshape(len(y), -1)
+                a_run = np.concatenate([a_run, ex] if extra_nonneg else [a_run, ex, -ex], 1)
+            A.append(a_run)
             b.append(y - cols[2])
         A = np.concatenate(A)
         b = np.concatenate(b)
@@ -296,6 +325,9 @@ def base_refit_residual(spec, target_dev, h_factors=(0.55, 0.7, 0.85, 1.0, 1.2, 
         rms = float(np.sqrt(np.mean(res ** 2)))
         if best is None or rms < best[0]:
             best = (rms, {"h": h, "c_nut": float(c[0]), "c_b": float(c[1])})
+            if extra is not None:
+                m = len(c) - 2 if extra_nonneg else (len(c) - 2) // 2
+                best[1]["extra"] = [float(v) for v in (c[2:2 + m] if extra_nonneg else c[2:2 + m] - c[2 + m:])]
     return best
 
 

@@ -2,6 +2,7 @@
 """Write a suite of DriftLab campaign bundles with hidden effects.
 
     python3 campaigns.py --out DIR [--quick] [--only NAME[,NAME...]] [--no-refit]
+    python3 campaigns.py --suite widened --out DIR [--only ...] [--no-refit]   (widened.py)
 
 Each bundle is a folder in DriftLab's bundle format (DESIGN.md section 2):
 campaign.json, samples.csv, motion.csv, positioning.csv.  DIR/manifest.json
@@ -254,6 +255,15 @@ def build_one(entry, outroot, refit=True, scale=1.0, seed_offset=0):
 
 
 def main(argv=None):
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if "--suite" in argv or any(x.startswith("--suite=") for x in argv):
+        sp = argparse.ArgumentParser(add_help=False)
+        sp.add_argument("--suite", choices=("default", "widened"), default="default")
+        known, rest = sp.parse_known_args(argv)
+        if known.suite == "widened":   # the widened suite (widened_suite.py), same options but --quick/--scale
+            import widened
+            return widened.main(rest)
+        argv = rest
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", required=True)
     ap.add_argument("--quick", action="store_true", help="one bundle per cause, one null, one unexplained")

@@ -334,6 +334,9 @@ def selfcheck(verbose=True):
               f"{e64:.3f} um (64 cells, 2 s), {e64c:.3f} um (64 cells, 10 s)")
     report("grid/step convergence, 64 cells 2 s vs 240 cells 1 s", abs(e64 - e_ref) / abs(e_ref), 5e-3)
     report("step convergence, 64 cells 10 s vs 240 cells 1 s", abs(e64c - e_ref) / abs(e_ref), 5e-3)
+    # 7. the widened suite's heat inputs (region at the fixed end, per-end bearing law, lags)
+    from heat_regions import selfcheck_regions  # local module
+    selfcheck_regions(report)
     return ok
 
 
