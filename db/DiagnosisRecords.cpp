@@ -3,6 +3,7 @@
 #include <QJsonArray>
 
 #include "db/ModelFitRecords.h"
+#include "db/ModelTrustJson.h"
 
 namespace driftlab::db {
 
@@ -59,7 +60,8 @@ QJsonObject diagnosisJson(const diagnosis::DiagnosisResult& r) {
              {QStringLiteral("reading_noise_um"), jsonNumber(r.base_test.error_noise_um)}}},
         {QStringLiteral("findings"), findings},
         {QStringLiteral("causes"), causes},
-        {QStringLiteral("verdict"), r.verdict}};
+        {QStringLiteral("verdict"), r.verdict},
+        {QStringLiteral("gaps"), gapsJson(r.gaps)}};
     if (!r.verdict_evidence.isEmpty())
         json[QStringLiteral("verdict_evidence")] = r.verdict_evidence;
     if (!r.remaining.isEmpty()) json[QStringLiteral("remaining")] = r.remaining;

@@ -3,6 +3,8 @@
 // a controller (DESIGN.md sections 8 and 9; docs/compensation.md).
 #include <QFileInfo>
 #include <QJsonArray>
+#include <algorithm>
+#include <cmath>
 
 #include "app/cli/CliCommon.h"
 #include "app/cli/CommandTable.h"
@@ -10,6 +12,7 @@
 #include "app/cli/FlaggedSamples.h"
 #include "app/cli/ThermalProfile.h"
 #include "core/compensation/TableExport.h"
+#include "db/ModelTrustJson.h"
 
 namespace driftlab::cli {
 namespace {
@@ -19,6 +22,12 @@ using namespace driftlab::compensation;
 /// The table formats, then the straight-line temperature formats (ThermalProfile.h).
 const QStringList kFormats = tableFormats()
                              << QStringLiteral("sinumerik-temp") << QStringLiteral("isg-temp");
+
+QJsonArray uncertaintyJson(const CompensationTable& table) {
+    QJsonArray values;
+    for (double u : table.uncertainty_um) values.append(jsonNumber(u));
+    return values;
+}
 
 QString umWithUnit(double value) {
     return std::isfinite(value) ? QString::number(value, 'f', 3) + QStringLiteral(" µm")
@@ -155,7 +164,8 @@ int compensateCommand(const QStringList& args) {
     }
     if (lineFormat) return writeTemperatureLine(parser, *thermal, formatName, source);
     const TableResult built =
-        buildTable(evaluation, settings, limits, thermal ? thermal->error_um : ErrorProfile{});
+        buildTable(evaluation, settings, limits, thermal ? thermal->error_um : ErrorProfile{},
+                   thermal ? thermal->uncertainty_um : ErrorProfile{});
     if (!built.ok()) throw CliError(source + QStringLiteral(": ") + built.error);
     const CompensationTable& table = built.table;
     QStringList warnings = evaluation.warnings + built.warnings;
@@ -177,6 +187,10 @@ int compensateCommand(const QStringList& args) {
                                .arg(push::outcomeName(pushed->outcome), pushed->message));
     };
 
+    const double maxUncertainty =
+        table.uncertainty_um.empty()
+            ? NAN
+            : *std::max_element(table.uncertainty_um.begin(), table.uncertainty_um.end());
     if (json) {
         printJson(
             {{QStringLiteral("source"), source},
@@ -193,6 +207,10 @@ int compensateCommand(const QStringList& args) {
              {QStringLiteral("B_mean_um"), jsonNumber(table.mean_reversal_um)},
              {QStringLiteral("cycles"), evaluation.cycles},
              {QStringLiteral("thermal"), thermal ? QJsonValue(thermal->description) : QJsonValue()},
+             {QStringLiteral("validation"),
+              thermal ? QJsonValue(db::validationJson(thermal->validation)) : QJsonValue()},
+             {QStringLiteral("uncertainty_um"), uncertaintyJson(table)},
+             {QStringLiteral("max_uncertainty_um"), jsonNumber(maxUncertainty)},
              {QStringLiteral("sign"),
               QStringLiteral("correction = -(actual - target), added to the command")}});
         failIfNotApplied();
@@ -214,6 +232,11 @@ int compensateCommand(const QStringList& args) {
                   .arg(umWithUnit(table.maxAbsCorrectionUm())));
     printLine(
         QStringLiteral("backlash: mean reversal B̄ = %1").arg(umWithUnit(table.mean_reversal_um)));
+    printLine(QStringLiteral("uncertainty of the corrections: up to %1 (95 %, k = 2: %2)")
+                  .arg(umWithUnit(maxUncertainty),
+                       thermal ? QStringLiteral("the cycles' scatter of the mean deviations and "
+                                                "the thermal model's prediction interval")
+                               : QStringLiteral("the cycles' scatter of the mean deviations")));
     if (pushed) printPush(*plan, *pushed);
     failIfNotApplied();
     return 0;

@@ -120,6 +120,7 @@ int diagnoseCommand(const QStringList& args) {
         if (const auto* f = diagnosis::adoptedFinding(r, cause))
             printLine(QStringLiteral("%1: %2").arg(cause, f->evidence));
     if (!r.remaining.isEmpty()) printLine(r.remaining);
+    for (const QString& line : models::gapLines(r.gaps)) printLine(line);
     return 0;
 }
 

@@ -6,6 +6,7 @@
 #include "core/models/ModelFactory.h"
 #include "core/models/ModelledRuns.h"
 #include "db/ModelFitRecords.h"
+#include "db/ModelTrustJson.h"
 
 namespace driftlab::cli {
 std::vector<models::RunData> modelDataset(const Campaign& campaign, const QStringList& runs,
@@ -38,26 +39,35 @@ QJsonObject HeldOutFit::json() const {
                                   {QStringLiteral("rise_K"), b.rise_K},
                                   {QStringLiteral("training_low_K"), b.training_low_K},
                                   {QStringLiteral("training_high_K"), b.training_high_K}});
+    QJsonObject tested = heldOut() ? db::scoreJson(score) : QJsonObject();
+    if (heldOut()) {
+        tested[QStringLiteral("coverage")] = db::coverageJson(coverage);
+        tested[QStringLiteral("worse_than_none")] = heldOutWorseThanNone();
+    }
+    QJsonObject shownMetrics = metrics;
+    shownMetrics.remove(QStringLiteral("validation"));  // at the top level
     return {{QStringLiteral("model"), model->name()},
             {QStringLiteral("train_runs"), QJsonArray::fromStringList(trainRuns)},
             {QStringLiteral("test_runs"), QJsonArray::fromStringList(testRuns)},
             {QStringLiteral("parameters"), record.parameters},
             {QStringLiteral("score_kind"), metrics[QStringLiteral("score_kind")].toString()},
             {QStringLiteral("score"), scored},
-            {QStringLiteral("test"), heldOut() ? db::scoreJson(score) : QJsonObject()},
+            {QStringLiteral("test"), tested},
+            {QStringLiteral("validation"), db::validationJson(validation)},
+            {QStringLiteral("gaps"), db::gapsJson(gaps)},
             {QStringLiteral("beyond_training"), beyond},
             {QStringLiteral("fit"),
              QJsonObject{{QStringLiteral("message"), fit.message},
                          {QStringLiteral("rms_um"), jsonNumber(fit.rms_um)},
                          {QStringLiteral("notes"), QJsonArray::fromStringList(fit.notes)},
-                         {QStringLiteral("metrics"), metrics}}}};
+                         {QStringLiteral("metrics"), shownMetrics}}}};
 }
 
 HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
                       std::optional<QStringList> train, std::optional<QStringList> test,
                       const QString& target, bool progress) {
     HeldOutFit r;
-    r.model = makeModelOrFail(modelName);
+    r.model = makeModelOrFail(modelName);  // an unknown name is refused before any work
     r.trainRuns = train.value_or(QStringList());
     r.testRuns = test.value_or(QStringList());
     const QStringList all = models::modelledRuns(campaign, target);
@@ -78,9 +88,12 @@ HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
     const QString label = QStringLiteral("fitting ") + r.model->name();
     if (progress) printProgress(label, 0);
     const std::vector<models::RunData> training = modelDataset(campaign, r.trainRuns, target);
-    r.fit = r.model->fit(training);
+    models::ValidatedFit validated = models::fitValidated(modelName, training);
     if (progress) printProgress(label, 1);
-    if (!r.fit.success) throw CliError(r.fit.message);
+    if (!validated.fit.success) throw CliError(validated.fit.message);
+    r.model = std::move(validated.model);
+    r.fit = std::move(validated.fit);
+    r.validation = validated.validation;
 
     // With no run left out (one run, or --test with none) the only score there
     // is comes from the training runs: it is labelled so, and never stands
@@ -88,9 +101,42 @@ HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
     const std::vector<models::RunData> scored = modelDataset(campaign, r.scoredRuns(), target);
     r.score = models::scoreModel(*r.model, scored);
     if (!r.score.ok()) throw CliError(r.score.error);
-    if (r.heldOut()) r.beyondTraining = models::risesBeyondTraining(training, scored);
+    if (r.heldOut()) {
+        r.beyondTraining = models::risesBeyondTraining(training, scored);
+        r.coverage = models::coverageOf(*r.model, r.validation.interval, scored);
+    }
+    r.gaps = models::gapsOf(training);
+    if (r.heldOut()) {
+        const std::vector<models::DataGap> scoredGaps = models::gapsOf(scored);
+        r.gaps.insert(r.gaps.end(), scoredGaps.begin(), scoredGaps.end());
+    }
     r.record = db::modelFitRecord(r.model->name(), target, r.trainRuns, r.testRuns, r.fit, r.score);
+    r.record.metrics[QStringLiteral("validation")] = db::validationJson(r.validation);
     return r;
+}
+
+QStringList HeldOutFit::trustLines() const {
+    QStringList lines;
+    if (heldOutWorseThanNone())
+        lines << QStringLiteral(
+                     "error: the model makes the held-out runs' thermal error worse, not "
+                     "better: RMS %1 µm with it, %2 µm without (%3 %): do not compensate with it")
+                     .arg(score.rms_um, 0, 'f', 2)
+                     .arg(score.uncompensated_rms_um, 0, 'f', 2)
+                     .arg(100 * score.reduction, 0, 'f', 0);
+    if (validation.interval.known() && coverage.known())
+        lines << QStringLiteral(
+                     "prediction interval ±%1 µm (95 %): %2 % of the held-out readings "
+                     "inside it%3")
+                     .arg(validation.interval.half_width_um, 0, 'f', 2)
+                     .arg(100 * coverage.share, 0, 'f', 0)
+                     .arg(coverage.farBelowClaim()
+                              ? QStringLiteral(", far less than it claims: the held-out runs "
+                                               "differ from the training runs more than the "
+                                               "training runs differ among themselves")
+                              : QString());
+    lines << models::gapLines(gaps);
+    return lines;
 }
 
 }  // namespace driftlab::cli

@@ -9,6 +9,7 @@
 
 #include "core/domain/Campaign.h"
 #include "core/models/ModelScore.h"
+#include "core/models/ModelValidation.h"
 #include "core/models/ThermalErrorModel.h"
 #include "core/models/TrainingEnvelope.h"
 #include "db/ModelFitStore.h"
@@ -27,7 +28,14 @@ struct HeldOutFit {
     QStringList trainRuns;
     QStringList testRuns;  ///< empty: no run held out, the score is a training score
     models::FitSummary fit;
+    /// The model's cross-validation on its training runs: against no
+    /// compensation, and its prediction interval.
+    models::Validation validation;
     models::Score score;
+    /// The share of the held-out readings inside the prediction interval.
+    models::Coverage coverage;
+    /// The holes of the training and scored runs' logs, bridged or left out.
+    std::vector<models::DataGap> gaps;
     /// Where the held-out runs' temperatures leave the training runs' (the
     /// score there is an extrapolation's); empty without a held-out run.
     std::vector<models::RiseBeyondTraining> beyondTraining;
@@ -36,9 +44,14 @@ struct HeldOutFit {
     bool heldOut() const { return !testRuns.isEmpty(); }
     /// The runs the score is on: the test runs, or the training runs when none is held out.
     QStringList scoredRuns() const { return heldOut() ? testRuns : trainRuns; }
-    /// `fit --json`: model, runs, parameters, score kind, score, test,
-    /// beyond_training, fit.
+    /// The held-out runs' thermal error is worse with the model than without.
+    bool heldOutWorseThanNone() const { return heldOut() && score.reduction < 0; }
+    /// `fit --json`: model, runs, parameters, score kind, score, test (with
+    /// its coverage), validation, gaps, beyond_training, fit.
     QJsonObject json() const;
+    /// What the text output says after the score: error-level lines where
+    /// the model does harm, the interval's coverage, the gaps.
+    QStringList trustLines() const;
 };
 
 /// Fits `modelName` on `train` and scores it on `test`. Without `train`: the

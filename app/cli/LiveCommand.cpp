@@ -12,8 +12,11 @@
 #include "acquisition/live/LiveOffsetWriter.h"
 #include "app/cli/CliCommon.h"
 #include "app/cli/FlaggedSamples.h"
+#include "app/cli/ThermalProfile.h"
 #include "core/compensation/LiveReplay.h"
 #include "core/models/HeatTransferModel.h"
+#include "core/models/ModelValidation.h"
+#include "db/ModelTrustJson.h"
 
 namespace driftlab::cli {
 namespace {
@@ -38,10 +41,11 @@ std::vector<std::pair<double, double>> cuttingWindows(const QString& text) {
     return windows;
 }
 
-QJsonObject updateJson(const LiveUpdate& u) {
+QJsonObject updateJson(const LiveUpdate& u, double uncertainty_um) {
     return {{QStringLiteral("time_s"), u.time_s},
             {QStringLiteral("due_s"), u.due_s},
             {QStringLiteral("offset_um"), u.offset_um},
+            {QStringLiteral("uncertainty_um"), jsonNumber(uncertainty_um)},
             {QStringLiteral("limited"), u.limited}};
 }
 
@@ -92,9 +96,9 @@ int liveCommand(const QStringList& args) {
                        "possible)."),
         QStringLiteral("N")};
     parseArguments(parser, args,
-                   campaignSourceOptions()
-                       << runOption << train << interval << position << points << maxChange
-                       << cutting << push << staleAfter << speedup << keepFlaggedOption(),
+                   campaignSourceOptions() << runOption << train << interval << position << points
+                                           << maxChange << cutting << push << staleAfter << speedup
+                                           << keepFlaggedOption() << forceOption(),
                    campaignSourceArguments({runOption, train}));
     const QString runId = parser.value(runOption);
     const QStringList trainRuns = runList(parser.value(train));
@@ -114,11 +118,24 @@ int liveCommand(const QStringList& args) {
     if (!data.ok()) throw CliError(data.error);
     const models::RunData replayed = data.runs.back();
     data.runs.pop_back();
-    models::HeatTransferModel model;
     printProgress(QStringLiteral("fitting heat-transfer"), 0);
-    const models::FitSummary fit = model.fit(data.runs);
+    const models::ValidatedFit fitted =
+        models::fitValidated(QStringLiteral("heat-transfer"), data.runs);
     printProgress(QStringLiteral("fitting heat-transfer"), 1);
-    if (!fit.success) throw CliError(fit.message);
+    if (!fitted.fit.success) throw CliError(fitted.fit.message);
+    // A rehearsal may show a model that would do harm; a push may not send it.
+    const QString what = QStringLiteral("the heat-transfer model fitted on %1")
+                             .arg(trainRuns.join(QLatin1Char(',')));
+    if (parser.isSet(push))
+        refuseHarm(parser, fitted.validation, what);
+    else if (fitted.validation.worseThanNone())
+        printWarnings({QStringLiteral("%1 does worse than no compensation where it was not "
+                                      "fitted (%2): a push would refuse it")
+                           .arg(what, fitted.validation.describe())});
+    std::vector<models::DataGap> gaps = models::gapsOf(data.runs);
+    gaps.insert(gaps.end(), replayed.gaps.begin(), replayed.gaps.end());
+    printWarnings(models::gapLines(gaps));
+    const auto& model = static_cast<const models::HeatTransferModel&>(*fitted.model);
     QString why;
     const auto screw = model.fittedScrew(replayed, &why);
     if (!screw) throw CliError(why);
@@ -135,6 +152,9 @@ int liveCommand(const QStringList& args) {
     options.settings.offset_position_mm =
         parser.isSet(position) ? numberOption(parser, position) : (lo + hi) / 2;
 
+    const models::PredictionInterval& band = fitted.validation.interval;
+    const double uncertainty_um =
+        band.known() ? band.halfWidthAt(options.settings.offset_position_mm) : NAN;
     const auto windows = cuttingWindows(parser.value(cutting));
     if (parser.isSet(push) && parser.isSet(cutting))
         throw CliError(QStringLiteral("--cutting goes without --push: the controller says when it "
@@ -185,9 +205,10 @@ int liveCommand(const QStringList& args) {
             ++written;
         }
         if (!json)
-            printLine(QStringLiteral("%1 s  offset %2 µm at %3 mm%4%5")
+            printLine(QStringLiteral("%1 s  offset %2 ± %3 µm at %4 mm%5%6")
                           .arg(u.time_s, 8, 'f', 0)
                           .arg(u.offset_um, 8, 'f', 3)
+                          .arg(uncertainty_um, 0, 'f', 2)
                           .arg(options.settings.offset_position_mm, 0, 'f', 1)
                           .arg(u.time_s > u.due_s + 1e-9
                                    ? QStringLiteral("  (due at %1 s, waited for the cut)")
@@ -208,7 +229,7 @@ int liveCommand(const QStringList& args) {
         result.rms_before_um > 0 ? 1 - result.rms_after_um / result.rms_before_um : 0;
     if (json) {
         QJsonArray updates;
-        for (const LiveUpdate& u : result.updates) updates.append(updateJson(u));
+        for (const LiveUpdate& u : result.updates) updates.append(updateJson(u, uncertainty_um));
         printJson(
             {{QStringLiteral("run"), runId},
              {QStringLiteral("train_runs"), QJsonArray::fromStringList(trainRuns)},
@@ -220,7 +241,9 @@ int liveCommand(const QStringList& args) {
              {QStringLiteral("rms_before_um"), result.rms_before_um},
              {QStringLiteral("rms_after_um"), result.rms_after_um},
              {QStringLiteral("rms_after_offset_um"), result.rms_after_offset_um},
-             {QStringLiteral("reduction"), gain}});
+             {QStringLiteral("reduction"), gain},
+             {QStringLiteral("validation"), db::validationJson(fitted.validation)},
+             {QStringLiteral("gaps"), db::gapsJson(gaps)}});
     } else {
         printLine(
             QStringLiteral("%1 updates; on %2's %3 readings the thermal error goes from %4 to "

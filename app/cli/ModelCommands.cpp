@@ -79,6 +79,7 @@ int fitCommand(const QStringList& args) {
                   .arg(score.rms_um, 0, 'f', 2)
                   .arg(score.peak_um, 0, 'f', 2)
                   .arg(100 * score.reduction, 0, 'f', 1));
+    for (const QString& line : r.trustLines()) printLine(line);
     const QStringList beyond = models::describeRisesBeyondTraining(r.beyondTraining);
     if (!beyond.isEmpty()) {
         printLine(

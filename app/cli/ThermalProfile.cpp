@@ -6,6 +6,7 @@
 
 #include "app/cli/CliCommon.h"
 #include "core/compensation/TemperatureCompensationLine.h"
+#include "core/models/AutoModel.h"
 #include "core/models/ModelFactory.h"
 
 namespace driftlab::cli {
@@ -29,6 +30,11 @@ const QCommandLineOption kAt{
     QStringLiteral("The thermal state: a run and a time in it, RUN@SECONDS (e.g. S3@3600)."),
     QStringLiteral("RUN@S")};
 
+const QCommandLineOption kForce{
+    QStringLiteral("force"),
+    QStringLiteral("Use the model even when it does worse than no compensation on its own "
+                   "cross-validation (refused without it: it would make the machine worse).")};
+
 /// Where the profile is evaluated: one point per millimetre at most, at least
 /// 64, then linear in between (the heat-transfer model simulates the whole run
 /// per call, so it is called once).
@@ -37,7 +43,22 @@ constexpr int kProfilePoints = 257;
 }  // namespace
 
 QList<QCommandLineOption> thermalProfileOptions() {
-    return {kModel, kTrain, kAt, kReference};
+    return {kModel, kTrain, kAt, kReference, kForce};
+}
+
+const QCommandLineOption& forceOption() {
+    return kForce;
+}
+
+void refuseHarm(const QCommandLineParser& parser, const models::Validation& validation,
+                const QString& what) {
+    if (!validation.worseThanNone()) return;
+    const QString why = QStringLiteral(
+                            "%1 does worse than no compensation where it was not "
+                            "fitted (%2, %3): it would make the machine worse")
+                            .arg(what, validation.describe(), validation.folds);
+    if (!parser.isSet(kForce)) throw CliError(why + QStringLiteral("; --force overrides"));
+    printWarnings({why + QStringLiteral(" (used anyway: --force)")});
 }
 
 bool wantsThermalProfile(const QCommandLineParser& parser) {
@@ -67,8 +88,7 @@ ThermalProfile thermalProfile(const QCommandLineParser& parser, const Campaign& 
             }
     if (train.isEmpty()) throw CliError(QStringLiteral("--train: no run to fit the model on"), 2);
 
-    auto model = models::makeModel(parser.value(kModel));
-    if (!model)
+    if (!models::makeModel(parser.value(kModel)))
         throw CliError(QStringLiteral("--model: '%1' is not a model (%2)")
                            .arg(parser.value(kModel), models::fitModelNames().join(", ")),
                        2);
@@ -85,12 +105,27 @@ ThermalProfile thermalProfile(const QCommandLineParser& parser, const Campaign& 
                            .arg(end_s)
                            .arg(time_s),
                        2);
-    printProgress(QStringLiteral("fitting ") + model->name(), 0);
-    const models::FitSummary fit = model->fit(data.runs);
-    printProgress(QStringLiteral("fitting ") + model->name(), 1);
-    if (!fit.success) throw CliError(fit.message);
+    const QString name = parser.value(kModel);
+    printProgress(QStringLiteral("fitting ") + name, 0);
+    models::ValidatedFit validated = models::fitValidated(name, data.runs);
+    printProgress(QStringLiteral("fitting ") + name, 1);
+    if (!validated.fit.success) throw CliError(validated.fit.message);
+    refuseHarm(parser, validated.validation, QStringLiteral("--model %1").arg(name));
+    if (const auto* chooser = dynamic_cast<const models::AutoModel*>(validated.model.get());
+        chooser && chooser->chosen() == QLatin1String("none"))
+        throw CliError(QStringLiteral("--model auto: %1; the table would carry no thermal part: "
+                                      "leave out --model and --at for the cold table")
+                           .arg(validated.fit.notes.front().section(QLatin1Char(':'), 0, 0)));
+    const models::ThermalErrorModel* model = validated.model.get();
+    std::vector<models::DataGap> gaps = models::gapsOf(data.runs);
+    gaps.insert(gaps.end(), state.gaps.begin(), state.gaps.end());
+    printWarnings(models::gapLines(gaps));
 
     ThermalProfile profile;
+    profile.validation = validated.validation;
+    profile.uncertainty_um = [interval = validated.validation.interval](double x) {
+        return interval.known() ? interval.halfWidthAt(x) : 0.0;
+    };
     profile.from_mm = from_mm;
     profile.to_mm = to_mm;
     profile.fixed_end_mm = state.fixedEnd_mm();

@@ -8,24 +8,38 @@
 
 #include "core/compensation/CompensationTable.h"
 #include "core/domain/Campaign.h"
+#include "core/models/ModelValidation.h"
 
 namespace driftlab::cli {
 
 struct ThermalProfile {
     compensation::ErrorProfile error_um;  ///< actual − target, µm, at a position
-    QString description;                  ///< "heat-transfer fitted on S1, at S3 t = 3600 s"
-    double from_mm = 0, to_mm = 0;        ///< where it was evaluated
-    double fixed_end_mm = 0;              ///< the screw's fixed end (0 without a screw)
+    /// The 95 % half-width of the model's prediction interval, µm, at a position.
+    compensation::ErrorProfile uncertainty_um;
+    models::Validation validation;  ///< the model's cross-validation on its training runs
+    QString description;            ///< "heat-transfer fitted on S1, at S3 t = 3600 s"
+    double from_mm = 0, to_mm = 0;  ///< where it was evaluated
+    double fixed_end_mm = 0;        ///< the screw's fixed end (0 without a screw)
 };
 
-/// --model, --train, --at.
+/// --model, --train, --at, --force.
 QList<QCommandLineOption> thermalProfileOptions();
+
+/// --force: use a model that does worse than no compensation on its own
+/// cross-validation (shared with `live`).
+const QCommandLineOption& forceOption();
+
+/// Refuses (CliError) a model worse than no compensation on its own
+/// cross-validation unless --force is given, then only warns; `what` names it.
+void refuseHarm(const QCommandLineParser& parser, const models::Validation& validation,
+                const QString& what);
 
 /// True when --model or --at was given (both are then required).
 bool wantsThermalProfile(const QCommandLineParser& parser);
 
-/// Fits the model and evaluates it at the state over [from_mm, to_mm].
-/// Throws CliError naming the option at fault.
+/// Fits and validates the model and evaluates it at the state over
+/// [from_mm, to_mm]. Throws CliError naming the option at fault, and for a
+/// model worse than no compensation without --force (refuseHarm).
 ThermalProfile thermalProfile(const QCommandLineParser& parser, const Campaign& campaign,
                               double from_mm, double to_mm);
 

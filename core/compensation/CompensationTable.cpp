@@ -1,6 +1,7 @@
 #include "core/compensation/CompensationTable.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace driftlab::compensation {
 namespace {
@@ -27,7 +28,17 @@ struct TargetDeviation {
     double target_mm;
     double plus_um;
     double minus_um;
+    double uncertainty_um;  ///< expanded (k = 2) of the mean deviation
 };
+
+/// The expanded uncertainty of a target's mean deviation from its cycles'
+/// scatter: 2·s/√n of each direction (the larger), or of their mean.
+double meanDeviationUncertainty(const iso::TargetResult& t, bool bidirectional) {
+    const double up = t.n_up > 1 ? t.s_up_um / std::sqrt(double(t.n_up)) : 0;
+    const double down = t.n_down > 1 ? t.s_down_um / std::sqrt(double(t.n_down)) : 0;
+    const double u = bidirectional ? std::max(up, down) : 0.5 * std::hypot(up, down);
+    return std::isfinite(u) ? 2 * u : 0;
+}
 
 /// Linear interpolation of `column` over the targets at `x`, which lies
 /// within their span.
@@ -165,7 +176,8 @@ QString checkChange(const CompensationTable& previous, const CompensationTable& 
 }
 
 TableResult buildTable(const iso::Evaluation& evaluation, const TableSettings& settings,
-                       const Limits& limits, const ErrorProfile& extra) {
+                       const Limits& limits, const ErrorProfile& extra,
+                       const ErrorProfile& extraUncertainty) {
     TableResult result;
     QString why;
     if (!settings.isValid(&why) || !limits.isValid(&why)) {
@@ -187,7 +199,8 @@ TableResult buildTable(const iso::Evaluation& evaluation, const TableSettings& s
     std::vector<TargetDeviation> targets;
     for (const iso::TargetResult& t : evaluation.targets)
         targets.push_back({t.target_mm, settings.bidirectional ? t.mean_up_um : t.mean_um,
-                           settings.bidirectional ? t.mean_down_um : t.mean_um});
+                           settings.bidirectional ? t.mean_down_um : t.mean_um,
+                           meanDeviationUncertainty(t, settings.bidirectional)});
 
     const double first = targets.front().target_mm, last = targets.back().target_mm;
     const double start = settings.start_mm.value_or(first);
@@ -266,6 +279,10 @@ TableResult buildTable(const iso::Evaluation& evaluation, const TableSettings& s
             withoutNegativeZero(-(interpolate(targets, x, &TargetDeviation::plus_um) + added)));
         table.correction_minus_um.push_back(
             withoutNegativeZero(-(interpolate(targets, x, &TargetDeviation::minus_um) + added)));
+        const double thermal = extraUncertainty ? extraUncertainty(x) : 0.0;
+        table.uncertainty_um.push_back(
+            std::hypot(interpolate(targets, x, &TargetDeviation::uncertainty_um),
+                       std::isfinite(thermal) ? thermal : 0.0));
     }
     result.error = validate(table, limits, settings.max_points);
     return result;

@@ -63,6 +63,11 @@ struct CompensationTable {
     /// measured. A unidirectional table leaves it to the controller's
     /// backlash compensation.
     double mean_reversal_um = std::numeric_limits<double>::quiet_NaN();
+    /// The expanded uncertainty (95 %, k = 2) of each point's correction: the
+    /// mean deviations' (their cycles' scatter, s/√n, the larger of the two
+    /// directions) and the added thermal error's prediction interval, in
+    /// quadrature. Empty for a table built from a controller's read-back.
+    std::vector<double> uncertainty_um;
 
     std::size_t size() const { return position_mm.size(); }
     double spacing_mm() const {
@@ -89,10 +94,12 @@ struct TableResult {
 using ErrorProfile = std::function<double(double position_mm)>;
 
 /// The table from an ISO 230-2 evaluation's per-target mean deviations (the
-/// cold geometric error of a laser calibration), plus `extra` when given.
-/// Values between targets are interpolated linearly.
+/// cold geometric error of a laser calibration), plus `extra` when given,
+/// whose 95 % half-width is `extraUncertainty` (µm at a position). Values
+/// between targets are interpolated linearly.
 TableResult buildTable(const iso::Evaluation& evaluation, const TableSettings& settings,
-                       const Limits& limits = {}, const ErrorProfile& extra = {});
+                       const Limits& limits = {}, const ErrorProfile& extra = {},
+                       const ErrorProfile& extraUncertainty = {});
 
 /// Empty when `table` is well formed (positions finite and strictly
 /// increasing, values finite, column lengths equal, at most `max_points`

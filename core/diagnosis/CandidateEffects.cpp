@@ -45,7 +45,7 @@ void addToErrors(ScrewRunOutputs& out, const std::vector<PredictionPoint>& at, c
     if (rise.empty()) return;
     for (std::size_t j = 0; j < at.size(); ++j)
         out.error_um[j] += perKelvin_um * pathFactor(at[j].position_mm) *
-                           models::valueAt(rise, at[j].time_s, in.max_gap_s, in.run_id);
+                           models::valueAt(rise, at[j].time_s, in.run_id);
 }
 
 /// Starting value of a lag: of a few time constants from none to four hours,
@@ -64,8 +64,7 @@ double structureLagStart_s(const std::vector<models::RunData>& runs,
             const Signal rise = lagged(structure->rise_K, tau);
             const auto& r = residuals[k];
             for (std::size_t j = 0; j < r.points.size(); ++j) {
-                const double x =
-                    models::valueAt(rise, r.points[j].time_s, runs[k].max_gap_s, runs[k].run_id);
+                const double x = models::valueAt(rise, r.points[j].time_s, runs[k].run_id);
                 xy += x * r.error_um[j];
                 xx += x * x;
                 yy += r.error_um[j] * r.error_um[j];

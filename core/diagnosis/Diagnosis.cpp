@@ -137,6 +137,8 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
         result.error = train.ok() ? test.error : train.error;
         return result;
     }
+    result.gaps = models::gapsOf(train.runs);
+    for (const models::DataGap& g : models::gapsOf(test.runs)) result.gaps.push_back(g);
 
     // Asked between candidates and, through the models' cancel check, inside
     // each fit, from both fitting threads: the caller's callback is called by

@@ -109,6 +109,8 @@ struct DiagnosisResult {
     double structure_explained = 0;
     /// The base residuals on the test runs (for the residual map).
     std::vector<models::ReadingResiduals> base_residuals;
+    /// The holes of the training and test runs' logs, bridged or left out.
+    std::vector<models::DataGap> gaps;
 };
 
 /// The finding of an adopted cause (the step it was adopted in), or nullptr.

@@ -208,8 +208,8 @@ QString describeStructure(const std::vector<models::ReadingResiduals>& residuals
             auto& [x, y] = pairs[t.channel_id];
             for (std::size_t j = 0; j < residuals[k].points.size(); ++j) {
                 try {
-                    x.push_back(models::valueAt(t.rise_K, residuals[k].points[j].time_s,
-                                                runs[k].max_gap_s, runs[k].run_id));
+                    x.push_back(
+                        models::valueAt(t.rise_K, residuals[k].points[j].time_s, runs[k].run_id));
                     y.push_back(residuals[k].error_um[j]);
                 } catch (const models::ModelError&) {
                     // a reading in a gap of this channel: no pair, not an error

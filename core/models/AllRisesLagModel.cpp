@@ -29,8 +29,8 @@ RunData thinned(const RunData& run, int rows) {
 constexpr double kRadPerSPerKrpm = 2 * std::numbers::pi * 1000 / 60;
 
 /// The spindle's speed in 1000 rpm raised to `exponent`.
-PiecewiseInput heatInput(const RunData& run, int exponent, double until_s) {
-    PiecewiseInput input = spindleSpeed(run, until_s, QStringLiteral("arx-all"));
+PiecewiseInput heatInput(const RunData& run, int exponent) {
+    PiecewiseInput input = spindleSpeed(run, QStringLiteral("arx-all"));
     for (double& v : input.value) v = std::pow(v / kRadPerSPerKrpm, exponent);
     return input;
 }
@@ -67,7 +67,6 @@ QString AllRisesLagModel::describe() const {
 
 Eigen::MatrixXd AllRisesLagModel::design(const RunData& run,
                                          const std::vector<PredictionPoint>& at) const {
-    const double until = arx::lastTime(at);
     const std::vector<double> times = arx::timesOf(at);
     Eigen::MatrixXd lags(Eigen::Index(at.size()), 0);
     auto add = [&](const Eigen::VectorXd& column) {
@@ -75,9 +74,8 @@ Eigen::MatrixXd AllRisesLagModel::design(const RunData& run,
         lags.rightCols(1) = column;
     };
     if (lagged_ >= 0)
-        add(lagResponse(arx::riseInput(run, channels_[qsizetype(lagged_)], until), tau_s_, times));
-    if (heatExponent_ > 0)
-        add(lagResponse(heatInput(run, heatExponent_, until), heatTau_s_, times));
+        add(lagResponse(arx::riseInput(run, channels_[qsizetype(lagged_)]), tau_s_, times));
+    if (heatExponent_ > 0) add(lagResponse(heatInput(run, heatExponent_), heatTau_s_, times));
     const Eigen::VectorXd dx =
         run.positionDependent() ? positionsFromFixedEnd(run, at) : Eigen::VectorXd();
     return allRisesDesign(risesAt(run, channels_, at), lags, dx);
@@ -129,8 +127,7 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     };
     auto inputsOf = [&](auto&& input) {
         std::vector<PiecewiseInput> inputs;
-        for (const RunData& run : search)
-            inputs.push_back(input(run, arx::lastTime(run.observationPoints())));
+        for (const RunData& run : search) inputs.push_back(input(run));
         return inputs;
     };
     const std::vector<int> runOf = runOfEachRow(search);
@@ -154,9 +151,8 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     Eigen::VectorXd bestRiseLag;
     for (int j = 0; j < int(channels_.size()); ++j) {
         if (!arx::risesAboveItsNoise(training, channels_[j])) continue;
-        const std::vector<PiecewiseInput> inputs = inputsOf([&](const RunData& run, double until) {
-            return arx::riseInput(run, channels_[j], until);
-        });
+        const std::vector<PiecewiseInput> inputs =
+            inputsOf([&](const RunData& run) { return arx::riseInput(run, channels_[j]); });
         for (double tau = options_.min_tau_s; tau <= options_.max_tau_s * 1.0001;
              tau *= options_.tau_step) {
             const Eigen::VectorXd lag = lagColumn(inputs, tau);
@@ -202,9 +198,8 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     } else if (!positionDependent) {
         try {
             for (int exponent : {1, 2})
-                heatInputs.push_back(inputsOf([&](const RunData& run, double until) {
-                    return heatInput(run, exponent, until);
-                }));
+                heatInputs.push_back(
+                    inputsOf([&](const RunData& run) { return heatInput(run, exponent); }));
         } catch (const ModelError& e) {
             heatInputs.clear();
             heatNote = QStringLiteral("no lagged heat input: %1").arg(e.message);

@@ -7,12 +7,15 @@
 // families within one standard error of the best score are equally good on
 // these runs (a few runs rank close families partly by chance): auto predicts
 // with their mean, which varies less than any one of them (forecast
-// combination; Bates & Granger 1969, Clemen 1989).
+// combination; Bates & Granger 1969, Clemen 1989). No compensation is always
+// a candidate: a family that does no better than it on these folds is never
+// chosen, and when none does, auto says so and predicts no thermal error.
 // The held-out test runs never take part in the choice.
 
 #include <memory>
 #include <vector>
 
+#include "core/models/ModelValidation.h"
 #include "core/models/ThermalErrorModel.h"
 
 namespace driftlab::models {
@@ -22,8 +25,13 @@ public:
     QString name() const override { return QStringLiteral("auto"); }
     QString describe() const override;
     /// The families the last fit predicts with, best cross-validated score
-    /// first, joined by " + " (their mean); empty before a fit.
+    /// first, joined by " + " (their mean); "none" when no family beats no
+    /// compensation; empty before a fit.
     QString chosen() const;
+    /// The cross-validation of the choice (its held-out predictions on the
+    /// folds it was chosen on: slightly optimistic, as every choice on the
+    /// data it is judged by; the held-out runs' coverage checks it).
+    const Validation& validation() const { return validation_; }
 
 protected:
     FitSummary fitRuns(const std::vector<RunData>& training) override;
@@ -31,26 +39,12 @@ protected:
                                const std::vector<PredictionPoint>& at) const override;
 
 private:
-    struct CrossValidatedScore {
-        double rms_um;
-        double standard_error_um;  ///< over the folds; 0 with a single fold
-    };
-    /// Runs to fit on, and runs (or parts of runs) to score on.
-    struct Fold {
-        std::vector<RunData> fit_on;
-        std::vector<RunData> held_out;
-    };
-    /// The folds every family is scored on, built once per fit.
-    static std::vector<Fold> foldsOf(const std::vector<RunData>& training);
-    /// RMS of the family's predictions on data it was not fitted on; throws
-    /// ModelError with the family's reason when it cannot be fitted.
-    CrossValidatedScore crossValidatedRms(const QString& family,
-                                          const std::vector<Fold>& folds) const;
     /// The summary of a mean of several families: each one's parameters,
     /// metrics and notes under its name.
     FitSummary combined(const std::vector<FitSummary>& fits) const;
 
     std::vector<std::unique_ptr<ThermalErrorModel>> chosen_;
+    Validation validation_;
 };
 
 }  // namespace driftlab::models

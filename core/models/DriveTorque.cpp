@@ -80,7 +80,7 @@ std::vector<double> sampleMeans(const Signal& torque, std::size_t steps, double 
         for (; i < t.size() && t[i] < end; ++i)
             if (t[i] >= double(k) * dt_s) sum += squared.value[i], ++count;
         mean[k] = count > 0 ? sum / double(count)
-                            : valueAt(squared, (double(k) + 0.5) * dt_s, 1e9, runId);
+                            : bridgedValueAt(squared, (double(k) + 0.5) * dt_s, runId);
     }
     return mean;
 }

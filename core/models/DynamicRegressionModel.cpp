@@ -162,7 +162,7 @@ Eigen::MatrixXd DynamicRegressionModel::features(const RunData& run,
     for (std::size_t k = 0; k < inputs_.size(); ++k) {
         F.col(2 * Eigen::Index(k)) = risesAt(run, {inputs_[k].channel}, at).col(0);
         F.col(2 * Eigen::Index(k) + 1) =
-            lagResponse(riseInput(run, inputs_[k].channel, lastTime(at)), inputs_[k].tau_s, times);
+            lagResponse(riseInput(run, inputs_[k].channel), inputs_[k].tau_s, times);
     }
     return F;
 }

@@ -63,10 +63,10 @@ bool risesAboveItsNoise(const std::vector<RunData>& training, const QString& cha
     return false;
 }
 
-PiecewiseInput riseInput(const RunData& run, const QString& channel, double until_s) {
+PiecewiseInput riseInput(const RunData& run, const QString& channel) {
     for (const TemperatureRise& t : run.temperatures) {
         if (t.channel_id != channel) continue;
-        requireCoverage(run, t.rise_K, until_s);
+        requireCoverage(run, t.rise_K);
         const std::vector<double>& v = t.rise_K.value;
         const double start = riseAtStart(t.rise_K, run.reference_window_s);
         PiecewiseInput input{t.rise_K.time_s, v};
@@ -121,7 +121,7 @@ QStringList usableChannels(const std::vector<RunData>& training, const QString& 
             for (const RunData& run : training) {
                 const std::vector<PredictionPoint> at = run.observationPoints();
                 risesAt(run, {channel.channel_id}, at);
-                riseInput(run, channel.channel_id, lastTime(at));
+                riseInput(run, channel.channel_id);
             }
             usable << channel.channel_id;
         } catch (const ModelError& e) {
@@ -224,7 +224,7 @@ InputSearch::InputSearch(const std::vector<RunData>& training, const QStringList
         const std::vector<double> times = timesOf(kept);
         for (qsizetype j = 0; j < candidates.size(); ++j) {
             append(raw[std::size_t(j)], risesAt(run, {candidates[j]}, kept).col(0));
-            const PiecewiseInput input = riseInput(run, candidates[j], lastTime(kept));
+            const PiecewiseInput input = riseInput(run, candidates[j]);
             for (std::size_t g = 0; g < grid_.size(); ++g)
                 append(lagged[std::size_t(j) * grid_.size() + g],
                        lagResponse(input, grid_[g], times));

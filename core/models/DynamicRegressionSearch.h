@@ -29,7 +29,7 @@ struct SetScore {
 /// The rise from the run's start as a lag input: each sample interval holds
 /// the mean of its two ends, so the filtered rise is not delayed by half a
 /// sample.
-PiecewiseInput riseInput(const RunData& run, const QString& channel, double until_s);
+PiecewiseInput riseInput(const RunData& run, const QString& channel);
 
 /// Whether the channel's rise, over some training run, spans more than ten
 /// times its noise (from successive differences, which a slow rise hardly

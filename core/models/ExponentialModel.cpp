@@ -25,9 +25,8 @@ QString ExponentialModel::describe() const {
         .arg(sources_);
 }
 
-std::vector<PiecewiseInput> ExponentialModel::inputs(const RunData& run, double until_s) const {
-    return {run.positionDependent() ? screwSpeed(run, until_s, name())
-                                    : spindleSpeed(run, until_s, name())};
+std::vector<PiecewiseInput> ExponentialModel::inputs(const RunData& run) const {
+    return {run.positionDependent() ? screwSpeed(run, name()) : spindleSpeed(run, name())};
 }
 
 QStringList ExponentialModel::inputSignals(const RunData& run) const {

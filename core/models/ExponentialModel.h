@@ -24,7 +24,7 @@ public:
     QString describe() const override;
 
 protected:
-    std::vector<PiecewiseInput> inputs(const RunData& run, double until_s) const override;
+    std::vector<PiecewiseInput> inputs(const RunData& run) const override;
     QStringList inputSignals(const RunData& run) const override;
 
 private:

@@ -39,17 +39,17 @@ PiecewiseInput held(const Signal& signal, double scale) {
 }
 
 /// Screw speed from the feed_mm_min samples, each held until the next sample.
-PiecewiseInput screwSpeedFromFeed(const RunData& run, double until_s, const QString& model) {
+PiecewiseInput screwSpeedFromFeed(const RunData& run, const QString& model) {
     const double scale = screwRadPerSPerFeed(run, model);
     requireSignal(run, run.feed_mm_min, model, QStringLiteral("the screw speed"));
-    requireCoverage(run, run.feed_mm_min, until_s);
+    requireCoverage(run, run.feed_mm_min);
     return held(run.feed_mm_min, scale);
 }
 
 }  // namespace
 
-PiecewiseInput screwSpeed(const RunData& run, double until_s, const QString& model) {
-    if (run.motion.empty()) return screwSpeedFromFeed(run, until_s, model);
+PiecewiseInput screwSpeed(const RunData& run, const QString& model) {
+    if (run.motion.empty()) return screwSpeedFromFeed(run, model);
     const double scale = screwRadPerSPerFeed(run, model);
     std::vector<MotionSegment> segments = run.motion;
     std::stable_sort(
@@ -72,13 +72,13 @@ PiecewiseInput screwSpeed(const RunData& run, double until_s, const QString& mod
     return input;
 }
 
-PiecewiseInput spindleSpeed(const RunData& run, double until_s, const QString& model) {
+PiecewiseInput spindleSpeed(const RunData& run, const QString& model) {
     if (run.spindle_speed_rpm.name.isEmpty())
         throw ModelError(QStringLiteral("model '%1' needs the spindle speed; this campaign has no "
                                         "speed channel")
                              .arg(model));
     requireSignal(run, run.spindle_speed_rpm, model, QStringLiteral("the spindle speed"));
-    requireCoverage(run, run.spindle_speed_rpm, until_s);
+    requireCoverage(run, run.spindle_speed_rpm);
     return held(run.spindle_speed_rpm, kRpmToRadPerS);
 }
 

@@ -11,13 +11,9 @@ LagModel::LagModel(std::vector<LagTerm> terms, LagSearchOptions options)
 
 LagCase LagModel::lagCase(const RunData& run, const std::vector<PredictionPoint>& at) const {
     LagCase c;
-    double until_s = 0;
-    for (const PredictionPoint& p : at) {
-        c.time_s.push_back(p.time_s);
-        until_s = std::max(until_s, p.time_s);
-    }
+    for (const PredictionPoint& p : at) c.time_s.push_back(p.time_s);
     c.dx = positionsFromFixedEnd(run, at);
-    c.inputs = inputs(run, until_s);
+    c.inputs = inputs(run);
     return c;
 }
 

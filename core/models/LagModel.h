@@ -15,9 +15,9 @@ class LagModel : public ThermalErrorModel {
 protected:
     LagModel(std::vector<LagTerm> terms, LagSearchOptions options);
 
-    /// The run's heat-source inputs from its start to `until_s`, indexed as the
-    /// terms' `input`. Throws ModelError when the run cannot give them.
-    virtual std::vector<PiecewiseInput> inputs(const RunData& run, double until_s) const = 0;
+    /// The run's heat-source inputs, indexed as the terms' `input`. Throws
+    /// ModelError when the run cannot give them.
+    virtual std::vector<PiecewiseInput> inputs(const RunData& run) const = 0;
     /// The columns or channels the inputs come from, for the summary.
     virtual QStringList inputSignals(const RunData& run) const = 0;
 

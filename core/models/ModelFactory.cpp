@@ -10,6 +10,7 @@
 #include "core/models/ExponentialModel.h"
 #include "core/models/HeatTransferModel.h"
 #include "core/models/MlrModel.h"
+#include "core/models/NoCompensationModel.h"
 #include "core/models/PolyPositionModel.h"
 #include "core/models/SensorlessModel.h"
 
@@ -41,11 +42,12 @@ QStringList modelNames() {
 }
 
 QStringList fitModelNames() {
-    return modelNames() << QStringLiteral("auto");
+    return modelNames() << QStringLiteral("auto") << QStringLiteral("none");
 }
 
 std::unique_ptr<ThermalErrorModel> makeModel(const QString& name) {
     if (name == QLatin1String("auto")) return std::make_unique<AutoModel>();
+    if (name == QLatin1String("none")) return std::make_unique<NoCompensationModel>();
     for (const auto& [known, make] : registry())
         if (known == name) return make();
     return nullptr;

@@ -12,8 +12,9 @@ namespace driftlab::models {
 /// The names makeModel knows, in the order a comparison lists them.
 QStringList modelNames();
 
-/// The names a single fit can ask for: the families and "auto", which chooses
-/// one of them by cross-validation on the training runs (AutoModel).
+/// The names a single fit can ask for: the families, "auto", which chooses
+/// one of them by cross-validation on the training runs (AutoModel), and
+/// "none", no compensation (NoCompensationModel).
 QStringList fitModelNames();
 
 /// A model with default options, or nullptr for an unknown name.

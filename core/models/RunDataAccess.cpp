@@ -19,12 +19,12 @@ const TemperatureRise& temperatureChannel(const RunData& run, const QString& id)
         QStringLiteral("run '%1' has no temperature channel '%2'").arg(run.run_id, id));
 }
 
-ModelError gapError(const Signal& signal, const QString& runId, double from, double to,
-                    double max_gap_s) {
-    return ModelError(QStringLiteral("run '%1', %2: no sample between %3 s and %4 s, a gap "
-                                     "longer than the %5 s limit")
-                          .arg(runId, describeSignal(signal), messageNumber(from),
-                               messageNumber(to), messageNumber(max_gap_s)));
+ModelError holeError(const Signal& signal, const QString& runId, double from, double to) {
+    return ModelError(
+        QStringLiteral("run '%1', %2: no sample between %3 s and %4 s, a hole in "
+                       "the log that its course on either side does not let "
+                       "DriftLab bridge (its observations are left out)")
+            .arg(runId, describeSignal(signal), messageNumber(from), messageNumber(to)));
 }
 
 ModelError noSamples(const Signal& signal, const QString& runId) {
@@ -40,38 +40,41 @@ QString describeSignal(const Signal& signal) {
         .arg(signal.name);
 }
 
-double valueAt(const Signal& signal, double time_s, double runGap_s, const QString& runId) {
+double valueAt(const Signal& signal, double time_s, const QString& runId) {
     const std::vector<double>& t = signal.time_s;
     if (t.empty()) throw noSamples(signal, runId);
-    const double max_gap_s = signal.gapLimit_s(runGap_s);
-    auto gap = [&](double from, double to) { return gapError(signal, runId, from, to, max_gap_s); };
+    if (const SignalHole* hole = signal.leftOutHoleAt(time_s))
+        throw holeError(signal, runId, hole->from_s, hole->to_s);
+    if (time_s - t.back() > kHoleIntervals * signal.sampling_s)
+        throw ModelError(QStringLiteral("run '%1', %2: no sample after %3 s (asked at %4 s)")
+                             .arg(runId, describeSignal(signal), messageNumber(t.back()),
+                                  messageNumber(time_s)));
+    return bridgedValueAt(signal, time_s, runId);
+}
+
+double bridgedValueAt(const Signal& signal, double time_s, const QString& runId) {
+    const std::vector<double>& t = signal.time_s;
+    if (t.empty()) throw noSamples(signal, runId);
     const auto hi = std::lower_bound(t.begin(), t.end(), time_s);
     const std::size_t i = std::size_t(hi - t.begin());
     if (hi != t.end() && *hi == time_s) return signal.value[i];
-    if (i == 0) {
-        if (t.front() - time_s > max_gap_s) throw gap(time_s, t.front());
-        return signal.value.front();
-    }
-    if (i == t.size()) {
-        if (time_s - t.back() > max_gap_s) throw gap(t.back(), time_s);
-        return signal.value.back();
-    }
+    if (i == 0) return signal.value.front();
+    if (i == t.size()) return signal.value.back();
     const double t0 = t[i - 1], t1 = t[i];
-    if (t1 - t0 > max_gap_s) throw gap(t0, t1);
     const double w = (time_s - t0) / (t1 - t0);
     return (1 - w) * signal.value[i - 1] + w * signal.value[i];
 }
 
-void requireCoverage(const RunData& run, const Signal& signal, double until_s) {
-    const std::vector<double>& t = signal.time_s;
-    if (t.empty()) throw noSamples(signal, run.run_id);
-    const double max_gap_s = signal.gapLimit_s(run.max_gap_s);
-    auto check = [&](double from, double to) {
-        if (to - from > max_gap_s) throw gapError(signal, run.run_id, from, to, max_gap_s);
-    };
-    check(0.0, t.front());
-    for (std::size_t i = 1; i < t.size(); ++i) check(t[i - 1], t[i]);
-    check(t.back(), until_s);
+void requireCoverage(const RunData& run, const Signal& signal) {
+    if (signal.time_s.empty()) throw noSamples(signal, run.run_id);
+    // From the run's start: an input first read later has no start to run from.
+    const double latest_s =
+        std::max(2 * run.reference_window_s, kHoleIntervals * signal.sampling_s);
+    if (signal.time_s.front() > latest_s)
+        throw ModelError(QStringLiteral("run '%1', %2: no sample between 0 s and %3 s, too late "
+                                        "for the run's start (limit %4 s)")
+                             .arg(run.run_id, describeSignal(signal),
+                                  messageNumber(signal.time_s.front()), messageNumber(latest_s)));
 }
 
 Eigen::MatrixXd risesAt(const RunData& run, const QStringList& channelIds,
@@ -80,8 +83,7 @@ Eigen::MatrixXd risesAt(const RunData& run, const QStringList& channelIds,
     for (qsizetype c = 0; c < channelIds.size(); ++c) {
         const TemperatureRise& channel = temperatureChannel(run, channelIds[c]);
         for (std::size_t p = 0; p < at.size(); ++p)
-            rises(Eigen::Index(p), c) =
-                valueAt(channel.rise_K, at[p].time_s, run.max_gap_s, run.run_id);
+            rises(Eigen::Index(p), c) = valueAt(channel.rise_K, at[p].time_s, run.run_id);
     }
     return rises;
 }

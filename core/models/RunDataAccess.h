@@ -16,14 +16,22 @@ namespace driftlab::models {
 /// "channel 'T_nut'" or "column 'torque_Nm'", for messages.
 QString describeSignal(const Signal& signal);
 
-/// Linear interpolation at `time_s`, held flat up to the signal's gap limit
-/// (Signal::gapLimit_s of the run's `max_gap_s`) beyond the first and last
-/// samples; a longer gap around the time is an error.
-double valueAt(const Signal& signal, double time_s, double max_gap_s, const QString& runId);
+/// Linear interpolation at `time_s`, held flat before the first sample and
+/// up to a hole's length (kHoleIntervals of the signal's interval) after the
+/// last; a time inside a hole left out (DataGaps.h) or later is an error.
+double valueAt(const Signal& signal, double time_s, const QString& runId);
 
-/// Requires samples from the run's start to `until_s` with no gap longer than
-/// the signal's gap limit (a held signal must not be held across a hole).
-void requireCoverage(const RunData& run, const Signal& signal, double until_s);
+/// For an input that drives a simulation or a lag through the whole run (the
+/// screw's room, a lagged rise, a heat source): linear interpolation across
+/// every hole, bridged or left out, held flat beyond the ends. The screw keeps
+/// simulating through a hole; the observations inside one left out are not
+/// fitted or scored. Throws only for a signal without samples.
+double bridgedValueAt(const Signal& signal, double time_s, const QString& runId);
+
+/// Requires samples of the signal from the run's start (as a rise's
+/// reference does: within two reference windows or a hole of its own rhythm),
+/// for a continuous input read by bridgedValueAt or as a piecewise input.
+void requireCoverage(const RunData& run, const Signal& signal);
 
 /// Temperature rises (rows: points, columns: channels) of the channels at the points.
 Eigen::MatrixXd risesAt(const RunData& run, const QStringList& channelIds,

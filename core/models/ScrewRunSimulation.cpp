@@ -74,7 +74,6 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
     if (!run.torque_Nm.empty())
         in.mean_torque_squared_Nm2 = meanTorqueSquaredPerStep(run, in.motion, steps, dt_s);
 
-    in.max_gap_s = run.max_gap_s;
     if (run.interferometer) in.dead_path_mm = run.interferometer->dead_path_mm;
     // RoomOnly reads the first usable room channel, the one the sensorless
     // model names as its input.
@@ -89,12 +88,14 @@ ScrewRunInputs prepareScrewRun(const RunData& run, double dt_s, const QString& m
 
     const TemperatureRise& ambient =
         loggedRoom ? *loggedRoom : channelForRole(run, ChannelRole::Ambient, model);
-    requireCoverage(run, ambient.rise_K, in.duration_s);
+    // Through a hole in the room's log the screw keeps simulating on the
+    // bridge; the observations inside a hole left out are not scored.
+    requireCoverage(run, ambient.rise_K);
     in.ambient_C.resize(steps + 1);
     for (std::size_t k = 0; k <= steps; ++k)
         in.ambient_C[k] =
-            ambient.reference_C + valueAt(ambient.rise_K, std::min(double(k) * dt_s, in.duration_s),
-                                          run.max_gap_s, run.run_id);
+            ambient.reference_C +
+            bridgedValueAt(ambient.rise_K, std::min(double(k) * dt_s, in.duration_s), run.run_id);
     // The screw starts at the room temperature it soaked in. Not at its own
     // sensors' first readings: a sensor offset would shift the whole run.
     in.initial_C = ambient.reference_C;

@@ -34,7 +34,6 @@ struct ScrewRunInputs {
     /// Rises of the air and structure channels (empty when the campaign has
     /// none), for effects on the interferometer reading.
     Signal air_rise_K, structure_rise_K;
-    double max_gap_s = 120;
     double dead_path_mm = 0;  ///< interferometer dead path
     /// The motion cut once for the run's screw on the identification grid
     /// (prepareScrewRun with cells > 0); a simulation on another grid cuts it

@@ -91,13 +91,15 @@ TemperatureRise temperatureRise(const Run& run, const Channel& channel,
         rise.unusable = where + QStringLiteral(": no samples in this run");
         return rise;
     }
-    const double gapLimit_s = s.gapLimit_s(options.max_gap_s);
-    if (s.time_s.front() > gapLimit_s) {
-        rise.unusable =
-            where + QStringLiteral(
-                        ": first sample at %1 s, too late for a reference "
-                        "at the run's start (limit %2 s)")
-                        .arg(messageNumber(s.time_s.front()), messageNumber(gapLimit_s));
+    // The reference is the median of the first window: a first sample later
+    // than two windows (or than a hole of the channel's own rhythm) is no
+    // reading of the run's start.
+    const double latest_s = std::max(2 * options.reference_window_s, kHoleIntervals * s.sampling_s);
+    if (s.time_s.front() > latest_s) {
+        rise.unusable = where + QStringLiteral(
+                                    ": first sample at %1 s, too late for a reference "
+                                    "at the run's start (limit %2 s)")
+                                    .arg(messageNumber(s.time_s.front()), messageNumber(latest_s));
         return rise;
     }
     rise.reference_C = firstWindowMedian(s, options.reference_window_s);
@@ -206,13 +208,27 @@ void checkTarget(const Campaign& campaign, const QString& target) {
                                   displacementChannels(campaign).join(QStringLiteral(", "))));
 }
 
+/// The holes of every input a model may read: the usable temperature
+/// channels, the axis columns and the spindle's speed.
+void judgeRunHoles(RunData& data, double runEnd_s) {
+    for (TemperatureRise& t : data.temperatures)
+        if (t.unusable.isEmpty())
+            judgeHoles(t.rise_K, data.run_id, runEnd_s, QStringLiteral("K"), false, data.gaps);
+    const std::pair<Signal*, QString> columns[] = {
+        {&data.position_mm, QStringLiteral("mm")},
+        {&data.feed_mm_min, QStringLiteral("mm/min")},
+        {&data.torque_Nm, QStringLiteral("N·m")},
+        {&data.spindle_speed_rpm, QStringLiteral("rpm")}};
+    for (const auto& [signal, unit] : columns)
+        judgeHoles(*signal, data.run_id, runEnd_s, unit, true, data.gaps);
+}
+
 RunData runData(const Campaign& campaign, const Run& run, const DatasetOptions& options) {
     checkSampleTable(run);
     RunData data;
     data.run_id = run.id;
     data.kind = run.kind;
     data.target_channel = options.target_channel;
-    data.max_gap_s = options.max_gap_s;
     data.reference_window_s = options.reference_window_s;
     if (options.target_channel.isEmpty()) {
         if (!isFeedAxisRun(run.kind))
@@ -242,6 +258,8 @@ RunData runData(const Campaign& campaign, const Run& run, const DatasetOptions& 
     data.feed_mm_min = presentSamples(run, kFeedColumn);
     data.torque_Nm = presentSamples(run, kTorqueColumn);
     data.motion = run.motion;
+    judgeRunHoles(data, run.samples.time_s.empty() ? 0.0 : run.samples.time_s.back());
+    leaveOutHoles(data);
     return data;
 }
 
@@ -282,10 +300,8 @@ DatasetResult buildDataset(const Campaign& campaign, const QStringList& runIds,
     DatasetResult result;
     try {
         if (runIds.isEmpty()) throw ModelError(QStringLiteral("no runs selected"));
-        if (!(options.max_gap_s > 0) || !(options.reference_window_s >= 0))
-            throw ModelError(
-                QStringLiteral("the gap limit must be positive and the reference "
-                               "window not negative"));
+        if (!(options.reference_window_s >= 0))
+            throw ModelError(QStringLiteral("the reference window must not be negative"));
         checkTarget(campaign, options.target_channel);
         std::set<QString> seen;
         for (const QString& id : runIds) {

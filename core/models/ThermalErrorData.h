@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/domain/Campaign.h"
+#include "core/models/DataGaps.h"
 #include "core/models/DriveTorqueModel.h"
 
 namespace driftlab::models {
@@ -21,8 +22,6 @@ struct DatasetOptions {
     /// A displacement channel to predict (`--target`); empty: the positioning
     /// error of feed-axis runs.
     QString target_channel;
-    /// The longest gap in a sampled signal that interpolation may bridge, s.
-    double max_gap_s = 120;
     /// A temperature rise is taken from the median of the samples in this first
     /// window of the channel (robust to a spike in the first sample), s.
     double reference_window_s = 60;
@@ -47,19 +46,33 @@ struct PredictionPoint {
     double position_mm = 0;
 };
 
+/// A hole in a signal (see DataGaps.h): from its last sample before to its
+/// first after (or the run's end), bridged or left out.
+struct SignalHole {
+    double from_s = 0, to_s = 0;
+    bool bridged = false;
+    bool to_run_end = false;  ///< no sample after it: it holds the run's end too
+    bool holds(double time_s) const { return time_s > from_s && (time_s < to_s || to_run_end); }
+};
+
 /// A sampled signal with its missing samples removed, time ascending.
 struct Signal {
     QString name;  ///< channel id or axis column
     std::vector<double> time_s;
     std::vector<double> value;
     /// The median interval between its samples: a logger's own rhythm, which
-    /// a gap is measured against (gapLimit_s); 0 when unknown.
+    /// a hole is measured against (kHoleIntervals of it); 0 when unknown. A
+    /// thermometer read every 5 min is no outage.
     double sampling_s = 0;
+    /// Its holes, in time order (judgeHoles).
+    std::vector<SignalHole> holes;
     bool empty() const { return time_s.empty(); }
-    /// The longest stretch without a sample that is not a hole in the data:
-    /// `max_gap_s`, or three of the signal's own intervals when it is logged
-    /// more slowly than that (a thermometer read every 5 min is no outage).
-    double gapLimit_s(double max_gap_s) const { return std::max(max_gap_s, 3 * sampling_s); }
+    /// The hole left out that holds `time_s` (strictly inside), or nullptr.
+    const SignalHole* leftOutHoleAt(double time_s) const {
+        for (const SignalHole& h : holes)
+            if (!h.bridged && h.holds(time_s)) return &h;
+        return nullptr;
+    }
 };
 
 /// The rise ΔT = T − T(run start) of one temperature channel over one run.
@@ -81,8 +94,9 @@ struct RunData {
     std::optional<Screw> screw;  ///< the campaign's screw
     std::optional<double> nut_length_mm;
     std::optional<Interferometer> interferometer;
-    double max_gap_s = 120;          ///< from DatasetOptions
     double reference_window_s = 60;  ///< from DatasetOptions
+    /// The holes of its channels, bridged or left out (DataGaps.h).
+    std::vector<DataGap> gaps;
     std::vector<ErrorObservation> observations;
     /// Every temperature channel of the campaign, in declaration order.
     std::vector<TemperatureRise> temperatures;

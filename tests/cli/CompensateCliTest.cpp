@@ -34,14 +34,20 @@ QByteArray exported(const QTemporaryDir& dir, const QString& format, const QStri
     return readFile(out);
 }
 
-/// x̄_i of the example's run S1 per target, from iso230-2 --json.
-std::vector<std::pair<double, double>> meanDeviations() {
+/// x̄_i of the example's run S1 per target, from iso230-2 --json; with
+/// `uncertainty`, instead the expanded uncertainty of x̄_i from its cycles,
+/// 2 · ½·√(s↑²/n↑ + s↓²/n↓).
+std::vector<std::pair<double, double>> meanDeviations(bool uncertainty = false) {
     const CliResult r =
         runCli({QStringLiteral("iso230-2"), exampleBundlePath(), QStringLiteral("--json")});
     EXPECT_EQ(r.exitCode, 0) << r.err.constData();
     std::vector<std::pair<double, double>> means;
     for (const QJsonValue& t : QJsonDocument::fromJson(r.out).object()["targets"].toArray())
-        means.emplace_back(t["target_mm"].toDouble(), t["mean"].toDouble());
+        means.emplace_back(
+            t["target_mm"].toDouble(),
+            uncertainty ? std::hypot(t["s_up"].toDouble() / std::sqrt(t["n_up"].toDouble()),
+                                     t["s_down"].toDouble() / std::sqrt(t["n_down"].toDouble()))
+                        : t["mean"].toDouble());
     return means;
 }
 
@@ -61,15 +67,18 @@ TEST(CompensateCli, csvIsMinusTheInterpolatedIsoMeanDeviations) {
     QTemporaryDir dir;
     const QByteArray csv = exported(dir, "csv", "x.csv");
     QList<QByteArray> lines = csv.trimmed().split('\n');
-    ASSERT_EQ(lines.takeFirst(), QByteArray("position_mm,correction_um"));
+    ASSERT_EQ(lines.takeFirst(), QByteArray("position_mm,correction_um,uncertainty_um"));
     const auto means = meanDeviations();
+    const auto uncertainties = meanDeviations(true);
     ASSERT_GE(means.size(), 2u);
     ASSERT_EQ(lines.size(), 21);  // 0 to 700 mm every 35 mm
     for (const QByteArray& line : lines) {
         const QList<QByteArray> fields = line.split(',');
-        ASSERT_EQ(fields.size(), 2) << line.constData();
+        ASSERT_EQ(fields.size(), 3) << line.constData();
         const double x = fields[0].toDouble();
         EXPECT_NEAR(fields[1].toDouble(), -interpolated(means, x), 0.0005 + 1e-9)
+            << line.constData();
+        EXPECT_NEAR(fields[2].toDouble(), interpolated(uncertainties, x), 0.0005 + 1e-9)
             << line.constData();
     }
 }

@@ -114,12 +114,16 @@ TEST(ModelCli, fitTextSaysTheScoreIsHeldOutAndOnWhichRuns) {
         if (lines[i].startsWith("held-out score on S4 (runs the fit has not seen): RMS "))
             score = i;
     ASSERT_GE(score, 0) << r.out.constData();
-    ASSERT_EQ(lines.size(), score + 3) << r.out.constData();
-    EXPECT_EQ(lines[score + 1],
+    // Then how much of S4 the prediction interval covers (a regression fitted
+    // on one state covers little of another), and where S4 leaves S1.
+    ASSERT_EQ(lines.size(), score + 4) << r.out.constData();
+    EXPECT_TRUE(lines[score + 1].startsWith("prediction interval ±")) << r.out.constData();
+    EXPECT_TRUE(lines[score + 1].contains("far less than it claims")) << r.out.constData();
+    EXPECT_EQ(lines[score + 2],
               "beyond the training runs' temperature rises (the prediction "
               "extrapolates there):");
-    EXPECT_TRUE(lines[score + 2].startsWith("  S4: ")) << r.out.constData();
-    EXPECT_TRUE(lines[score + 2].contains("T_nut (nut) +")) << r.out.constData();
+    EXPECT_TRUE(lines[score + 3].startsWith("  S4: ")) << r.out.constData();
+    EXPECT_TRUE(lines[score + 3].contains("T_nut (nut) +")) << r.out.constData();
     CliResult json = runCli({QStringLiteral("fit"), simulatedBundle(), QStringLiteral("--model"),
                              QStringLiteral("mlr"), QStringLiteral("--test"), QStringLiteral("S1"),
                              QStringLiteral("--json")});

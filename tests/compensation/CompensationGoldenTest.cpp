@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <QFile>
+#include <cmath>
 
 #include "core/compensation/CsvExport.h"
 #include "core/compensation/FanucExport.h"
@@ -56,6 +57,18 @@ TEST(CompensationGolden, tableIsMinusTheInterpolatedMeanDeviations) {
     for (std::size_t i = 0; i < 5; ++i) {
         EXPECT_NEAR(b.correction_plus_um[i], plus[i], 1e-12) << i;
         EXPECT_NEAR(b.correction_minus_um[i], minus[i], 1e-12) << i;
+    }
+    // The expanded uncertainty of each point from the cycles' scatter
+    // (CompensationTestData.h).
+    const double at0 = std::sqrt(2.0 / 5), at100 = std::sqrt(0.5), at200 = std::sqrt(1.0 / 5);
+    const double uni[] = {at0, (at0 + at100) / 2, at100, (at100 + at200) / 2, at200};
+    const double bi[] = {2 / std::sqrt(5.0), 2.5 / std::sqrt(5.0), 3 / std::sqrt(5.0),
+                         2.5 / std::sqrt(5.0), 2 / std::sqrt(5.0)};
+    ASSERT_EQ(u.uncertainty_um.size(), 5u);
+    ASSERT_EQ(b.uncertainty_um.size(), 5u);
+    for (std::size_t i = 0; i < 5; ++i) {
+        EXPECT_NEAR(u.uncertainty_um[i], uni[i], 1e-12) << i;
+        EXPECT_NEAR(b.uncertainty_um[i], bi[i], 1e-12) << i;
     }
 }
 

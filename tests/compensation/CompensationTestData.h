@@ -14,6 +14,14 @@
 //   100         −3.5    −4      −3
 //   150         −0.5    −1.5    0.5      (midway: −(3.5 − 2.5)/2, −(4 − 1)/2, −(3 − 4)/2)
 //   200         2.5     1       4
+//
+// The expanded uncertainty of each point (k = 2, five cycles): of x̄,
+// 2·½·√(s↑²/5 + s↓²/5); of a bidirectional column, 2·max(s↑, s↓)/√5:
+//   target   s↑    s↓    unidirectional        bidirectional
+//   0 mm     1     1     √(2/5) = 0.632        2/√5 = 0.894
+//   100 mm   0.5   1.5   √(2.5/5) = 0.707      3/√5 = 1.342
+//   200 mm   0     1     √(1/5) = 0.447        2/√5 = 0.894
+// and midway at 50 and 150 mm: 0.670, 0.577 and 1.118, 1.118.
 
 #include "core/compensation/CompensationTable.h"
 #include "tests/iso/Iso230TestData.h"

@@ -125,9 +125,9 @@ TEST(ModelFactory, makesEveryNamedModel) {
                            QStringLiteral("exponential"), QStringLiteral("heat-transfer"),
                            QStringLiteral("sensorless"), QStringLiteral("arx"),
                            QStringLiteral("arx-all")}));
-    // A single fit may also ask for "auto", which is no family of its own and
-    // so stays out of the comparisons.
-    EXPECT_EQ(fitModelNames(), modelNames() << QStringLiteral("auto"));
+    // A single fit may also ask for "auto" and "none" (no compensation), which
+    // are no families of their own and so stay out of the comparisons.
+    EXPECT_EQ(fitModelNames(), modelNames() << QStringLiteral("auto") << QStringLiteral("none"));
     for (const QString& name : fitModelNames()) {
         const auto model = makeModel(name);
         ASSERT_TRUE(model) << qPrintable(name);

@@ -186,52 +186,6 @@ TEST(ThermalErrorData, targetMustBeADisplacementChannel) {
                                                "a target must be a displacement channel")));
 }
 
-TEST(ThermalErrorData, gapLongerThanTheLimitNamesRunAndChannel) {
-    Campaign c = nutOnlyCampaign();
-    std::vector<double>& nut = c.runs.front().samples.values[0];
-    for (std::size_t i = 100; i < 130; ++i) nut[i] = kNaN;  // 1000..1290 s missing
-    const DatasetResult data = buildDataset(c, {QStringLiteral("S1")});
-    ASSERT_TRUE(data.ok()) << qPrintable(data.error);
-    const RunData& run = data.runs.front();
-    // A short gap is bridged; the 300 s hole around 1200 s is not.
-    EXPECT_NO_THROW(risesAt(run, {QStringLiteral("T_nut")}, {{985, 0}}));
-    try {
-        risesAt(run, {QStringLiteral("T_nut")}, {{1200, 0}});
-        ADD_FAILURE() << "no error for a 300 s gap";
-    } catch (const ModelError& e) {
-        EXPECT_EQ(e.message, QStringLiteral("run 'S1', channel 'T_nut': no sample between 990 s "
-                                            "and 1300 s, a gap longer than the "
-                                            "120 s limit"));
-    }
-}
-
-TEST(ThermalErrorData, aLoggerReadingEveryFiveMinutesIsInterpolatedAndItsOwnHolesAreNot) {
-    // Every 30th sample of the 10 s log: a thermometer read every 300 s. Its
-    // rhythm is no outage: interpolated, exactly so for a linear rise …
-    Campaign c = nutOnlyCampaign();
-    std::vector<double>& nut = c.runs.front().samples.values[0];
-    for (std::size_t i = 0; i < nut.size(); ++i)
-        if (i % 30 != 0) nut[i] = kNaN;
-    DatasetResult data = buildDataset(c, {QStringLiteral("S1")});
-    ASSERT_TRUE(data.ok()) << qPrintable(data.error);
-    const TemperatureRise& rise = data.runs.front().temperatures.front();
-    EXPECT_EQ(rise.rise_K.sampling_s, 300);
-    EXPECT_NEAR(risesAt(data.runs.front(), {QStringLiteral("T_nut")}, {{1234, 0}})(0, 0),
-                1234.0 / 600, 1e-9);
-    // … but a missed reading of its own (600 → 1200 s missing) is a hole
-    // longer than three of its intervals.
-    for (std::size_t i : {60, 90, 120}) nut[i] = kNaN;
-    data = buildDataset(c, {QStringLiteral("S1")});
-    ASSERT_TRUE(data.ok()) << qPrintable(data.error);
-    try {
-        risesAt(data.runs.front(), {QStringLiteral("T_nut")}, {{1000, 0}});
-        ADD_FAILURE() << "no error for a 1200 s hole in a 300 s log";
-    } catch (const ModelError& e) {
-        EXPECT_EQ(e.message, QStringLiteral("run 'S1', channel 'T_nut': no sample between 300 s "
-                                            "and 1500 s, a gap longer than the 900 s limit"));
-    }
-}
-
 TEST(ThermalErrorData, channelStartingLateHasNoReference) {
     Campaign c = nutOnlyCampaign();
     std::vector<double>& nut = c.runs.front().samples.values[0];

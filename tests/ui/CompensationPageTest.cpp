@@ -66,14 +66,16 @@ struct Fixture {
     QByteArray shownCsv() const {
         const TableModel* m = page->tableModel();
         const bool bidirectional = page->bidirectionalBox()->isChecked();
-        QByteArray csv = bidirectional ? "position_mm,correction_um,correction_minus_um\n"
-                                       : "position_mm,correction_um\n";
+        QByteArray csv = bidirectional ? "position_mm,correction_um,correction_minus_um,"
+                                         "uncertainty_um\n"
+                                       : "position_mm,correction_um,uncertainty_um\n";
         for (int row = 0; row < m->rowCount(); ++row) {
             csv += m->data(m->index(row, TableModel::Position)).toString().toLatin1() + ',';
             csv += m->data(m->index(row, TableModel::CorrectionPlus)).toString().toLatin1();
             if (bidirectional)
                 csv +=
                     ',' + m->data(m->index(row, TableModel::CorrectionMinus)).toString().toLatin1();
+            csv += ',' + m->data(m->index(row, TableModel::Uncertainty)).toString().toLatin1();
             csv += '\n';
         }
         return csv;

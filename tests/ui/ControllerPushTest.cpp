@@ -84,13 +84,13 @@ QString historyResult(ui::PushHistoryModel* m, int row) {
 
 TEST(CompensationPush, readControllerShowsTheDifferenceToItsActiveTable) {
     PushFixture f;
-    ASSERT_EQ(f.page->tableModel()->columnCount(), 3);
+    ASSERT_EQ(f.page->tableModel()->columnCount(), 4);  // position, +, −, uncertainty
     QSignalSpy read(f.panel, &ui::ControllerPanel::activeTableRead);
     QTest::mouseClick(f.panel->readButton(), Qt::LeftButton);
     ASSERT_TRUE(waitFor(read)) << qPrintable(f.panel->statusLabel()->text());
     // A fresh controller holds no table: the change is the whole correction.
     ui::CompensationTableModel* m = f.page->tableModel();
-    ASSERT_EQ(m->columnCount(), 7);
+    ASSERT_EQ(m->columnCount(), 8);
     for (int row = 0; row < m->rowCount(); ++row)
         EXPECT_EQ(m->data(m->index(row, ui::CompensationTableModel::ChangePlus)).toString(),
                   m->data(m->index(row, ui::CompensationTableModel::CorrectionPlus)).toString());

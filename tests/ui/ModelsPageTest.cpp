@@ -71,7 +71,7 @@ TEST(ModelsPage, fitThroughTheWidgetsShowsStoresAndMatchesTheCli) {
     auto window = windowOn(store);
     ui::ModelsPage& page = *window->modelsPage();
     ASSERT_EQ(page.setupPanel()->trainList()->count(), 2);
-    EXPECT_EQ(page.setupPanel()->modelBox()->count(), 8);  // every models::fitModelNames()
+    EXPECT_EQ(page.setupPanel()->modelBox()->count(), 9);  // every models::fitModelNames()
     choose(page.setupPanel()->modelBox(), QStringLiteral("mlr"));
     check(page.setupPanel()->trainList(), {QStringLiteral("S1")});
     check(page.setupPanel()->testList(), {QStringLiteral("S3")});

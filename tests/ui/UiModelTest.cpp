@@ -40,19 +40,23 @@ TEST(UiModels, compensationTableModelKeepsTheContractThroughSetActiveAndClear) {
     ASSERT_TRUE(built.ok()) << qPrintable(built.error);
     model.setTable(built.table);
     EXPECT_EQ(model.rowCount(), 5);
-    EXPECT_EQ(model.columnCount(), 3);
+    EXPECT_EQ(model.columnCount(), 4);  // position, +, −, uncertainty
+    EXPECT_DOUBLE_EQ(
+        model.data(model.index(2, ui::CompensationTableModel::Uncertainty), Qt::UserRole)
+            .toDouble(),
+        built.table.uncertainty_um[2]);
     model.setActive(push::TableImage{});  // a controller without a table
-    EXPECT_EQ(model.columnCount(), 7);
+    EXPECT_EQ(model.columnCount(), 8);
     // Against "no table" every correction is a change.
     EXPECT_EQ(model.change()->points_changed, 5);
     EXPECT_DOUBLE_EQ(
         model.data(model.index(4, ui::CompensationTableModel::ChangePlus), Qt::UserRole).toDouble(),
         built.table.correction_plus_um[4]);
     model.setTable(built.table);  // rebuilt: the active table stays
-    EXPECT_EQ(model.columnCount(), 7);
+    EXPECT_EQ(model.columnCount(), 8);
     model.clear();
     EXPECT_EQ(model.rowCount(), 0);
-    EXPECT_EQ(model.columnCount(), 3);
+    EXPECT_EQ(model.columnCount(), 4);
 }
 
 TEST(UiModels, iso230_2TargetModelShowsNotDeterminedAsNa) {

@@ -40,7 +40,7 @@ int CompensationTableModel::rowCount(const QModelIndex& parent) const {
 
 int CompensationTableModel::columnCount(const QModelIndex& parent) const {
     if (parent.isValid()) return 0;
-    return m_change ? ChangeMinus + 1 : CorrectionMinus + 1;
+    return m_change ? ChangeMinus + 1 : Uncertainty + 1;
 }
 
 double CompensationTableModel::value(int row, int column) const {
@@ -52,6 +52,8 @@ double CompensationTableModel::value(int row, int column) const {
             return m_table.correction_plus_um[i];
         case CorrectionMinus:
             return m_table.correction_minus_um[i];
+        case Uncertainty:
+            return i < m_table.uncertainty_um.size() ? m_table.uncertainty_um[i] : std::nan("");
         case ActivePlus:
             return m_change->active.correction_plus_um[i];
         case ActiveMinus:
@@ -96,6 +98,8 @@ QVariant CompensationTableModel::headerData(int section, Qt::Orientation orienta
             return tr("Correction\n+ µm");
         case CorrectionMinus:
             return tr("Correction\n− µm");
+        case Uncertainty:
+            return tr("Uncertainty\n95 % ± µm");
         case ActivePlus:
             return tr("Active\n+ µm");
         case ActiveMinus:

@@ -1,6 +1,7 @@
 #pragma once
-// The Compensation page's table: one row per point, with the position and the
-// corrections (µm, what the controller adds to the command), and, once the
+// The Compensation page's table: one row per point, with the position, the
+// corrections (µm, what the controller adds to the command) and their expanded
+// uncertainty (95 %), and, once the
 // controller's active table was read, its corrections at the same points and
 // the change the new table makes. Display text is formatted as the CSV export
 // writes it (position 4 decimals, corrections 3); Qt::UserRole gives the number.
@@ -20,6 +21,7 @@ public:
         Position,
         CorrectionPlus,
         CorrectionMinus,
+        Uncertainty,
         ActivePlus,
         ActiveMinus,
         ChangePlus,

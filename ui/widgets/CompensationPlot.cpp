@@ -51,6 +51,21 @@ void CompensationPlot::show(const compensation::CompensationTable& table,
     m_plot->clearGraphs();
     const QVector<double> x = toVector(table.position_mm);
     const QColor plus(0x1f, 0x5f, 0xbf), minus(0xc0, 0x30, 0x30), active(0x70, 0x70, 0x70);
+    // The band of the corrections' expanded uncertainty (95 %) around the
+    // first column: where the table's values may lie.
+    if (table.uncertainty_um.size() == table.size()) {
+        QVector<double> low, high;
+        for (std::size_t i = 0; i < table.size(); ++i) {
+            low << table.correction_plus_um[i] - table.uncertainty_um[i];
+            high << table.correction_plus_um[i] + table.uncertainty_um[i];
+        }
+        const QColor band(0x1f, 0x5f, 0xbf, 40);
+        QCPGraph* lower = addCurve(*m_plot, tr("uncertainty (95 %)"), x, low, QPen(band), false);
+        QCPGraph* upper = addCurve(*m_plot, QString(), x, high, QPen(band), false);
+        upper->setBrush(band);
+        upper->setChannelFillGraph(lower);
+        m_plot->legend->removeItem(m_plot->legend->itemCount() - 1);
+    }
     if (table.bidirectional) {
         addCurve(*m_plot, tr("correction +"), x, toVector(table.correction_plus_um), QPen(plus, 2),
                  true);

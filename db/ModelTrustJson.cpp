@@ -1,0 +1,52 @@
+#include "db/ModelTrustJson.h"
+
+#include "db/ModelFitRecords.h"
+
+namespace driftlab::db {
+
+QJsonObject validationJson(const models::Validation& v) {
+    if (!v.known()) return {};
+    const models::PredictionInterval& interval = v.interval;
+    QJsonArray byPosition;
+    for (std::size_t i = 0; i < interval.position_mm.size(); ++i)
+        byPosition.append(QJsonObject{
+            {QStringLiteral("position_mm"), interval.position_mm[i]},
+            {QStringLiteral("half_width_um"), jsonNumber(interval.half_width_by_position_um[i])}});
+    return {{QStringLiteral("cv_rms_um"), jsonNumber(v.rms_um)},
+            {QStringLiteral("none_cv_rms_um"), jsonNumber(v.none_rms_um)},
+            {QStringLiteral("worse_than_none"), v.worseThanNone()},
+            {QStringLiteral("readings"), qint64(v.readings)},
+            {QStringLiteral("folds"), v.folds},
+            {QStringLiteral("interval"),
+             QJsonObject{{QStringLiteral("level"), interval.level},
+                         {QStringLiteral("half_width_um"), jsonNumber(interval.half_width_um)},
+                         {QStringLiteral("by_position"), byPosition},
+                         {QStringLiteral("method"), interval.method}}}};
+}
+
+QJsonObject coverageJson(const models::Coverage& c) {
+    if (!c.known()) return {};
+    return {{QStringLiteral("share"), c.share},
+            {QStringLiteral("claimed"), c.claimed},
+            {QStringLiteral("readings"), qint64(c.readings)},
+            {QStringLiteral("far_below_claim"), c.farBelowClaim()}};
+}
+
+QJsonArray gapsJson(const std::vector<models::DataGap>& gaps) {
+    QJsonArray out;
+    for (const models::DataGap& g : gaps)
+        out.append(QJsonObject{
+            {QStringLiteral("run"), g.run_id},
+            {QStringLiteral("channel"), g.channel},
+            {QStringLiteral("from_s"), g.from_s},
+            {QStringLiteral("to_s"), g.to_s},
+            {QStringLiteral("treatment"),
+             g.bridged ? QStringLiteral("bridged") : QStringLiteral("left_out")},
+            {QStringLiteral("bridge_error"), jsonNumber(g.bridge_error)},
+            {QStringLiteral("tolerance"), jsonNumber(g.tolerance)},
+            {QStringLiteral("unit"), g.unit},
+            {QStringLiteral("observations_left_out"), qint64(g.observations_left_out)}});
+    return out;
+}
+
+}  // namespace driftlab::db
