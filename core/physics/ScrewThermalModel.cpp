@@ -97,6 +97,19 @@ double ScrewThermalModel::collectMotionHeat(const StepConditions& c, double t0, 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=haswell", "default")))
 #endif
+void ScrewThermalModel::depositAtFixedEnd(double joules, double length_m) {
+    const double width = parameters_.cellWidth_m();
+    const double length = std::min(length_m, parameters_.length_m);
+    if (joules == 0) return;
+    if (length <= width) {
+        source_J_.front() += joules;
+        return;
+    }
+    for (std::size_t i = 0; i < source_J_.size() && double(i) * width < length; ++i)
+        source_J_[i] +=
+            joules * (std::min(double(i + 1) * width, length) - double(i) * width) / length;
+}
+
 void ScrewThermalModel::step(const StepConditions& c) {
     if (!(c.dt_s > 0) || !std::isfinite(c.dt_s))
         throw std::invalid_argument("screw simulation: time step must be positive, got " +
@@ -119,7 +132,7 @@ void ScrewThermalModel::step(const StepConditions& c) {
     }
 
     const double motor = parameters_.c_motor_W_per_Nm2 * c.mean_torque_squared_Nm2 * c.dt_s;
-    source_J_.front() += motor;
+    depositAtFixedEnd(motor, parameters_.motor_entry_m);
     ledger_.motor_J += motor;
     for (const auto* end : {&parameters_.fixed_end, &parameters_.free_end}) {
         if (end->kind != Kind::HeatFlux) continue;

@@ -88,6 +88,9 @@ private:
     void refactorise(double dt_s, double h_W_m2K);
     double collectMotionHeat(const StepConditions& c, double t0, double t1);
     double heatBearings(double omega_rad_s, double duration_s);
+    /// `joules` into the cells over `length_m` from the fixed end, in
+    /// proportion to each cell's share of it (the end cell for 0).
+    void depositAtFixedEnd(double joules, double length_m);
     double cumulativeExpansion_m(double x_m, const std::vector<double>& prefix) const;
     std::vector<double> expansionPrefix() const;
 

@@ -36,6 +36,7 @@ void ScrewThermalParameters::validate() const {
     nonNegative(c_nut_W_per_rad_s, "c_nut_W_per_rad_s");
     nonNegative(c_bearing_W_per_rad_s, "c_bearing_W_per_rad_s");
     nonNegative(c_motor_W_per_Nm2, "c_motor_W_per_Nm2");
+    nonNegative(motor_entry_m, "motor_entry_m");
     nonNegative(h_W_m2K, "h_W_m2K");
     nonNegative(h1_forced_W_m2K, "h1_forced_W_m2K");
     if (!std::isfinite(alpha_per_K) || !std::isfinite(fixed_end_axis_mm))

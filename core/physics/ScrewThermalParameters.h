@@ -37,6 +37,9 @@ struct ScrewThermalParameters {
     double nut_heat_exponent = 1;         ///< Q = c_nut·ω_ref·(|ω|/ω_ref)^n, equal at ω_ref
     double c_bearing_W_per_rad_s = 0.02;  ///< into each end cell, Q_b = c_b·|ω|
     double c_motor_W_per_Nm2 = 0;         ///< motor heat into the fixed end, ∝ torque²
+    /// The motor's heat enters evenly over this length from the fixed end
+    /// (through the coupling, flange and bearing seat); 0: the end cell.
+    double motor_entry_m = 0;
 
     // Convection to ambient: h = h0 + h1·|ω|^m (h1 = 0 in the base model).
     double h_W_m2K = 12;

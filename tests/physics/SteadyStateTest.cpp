@@ -118,6 +118,46 @@ TEST(SteadyState, SourceAtInsulatedEndOfLongRodDecaysExponentially) {
     }
 }
 
+// The motor's heat entering evenly over the first L of a long rod with an
+// insulated end: with q = Q/L per metre, θ = q/(hP) + B cosh(mx) on [0, L]
+// and C e^{−m(x−L)} beyond; continuity of θ and θ' at L gives
+// B = −q/(hP)·e^{−mL}, so θ(0) = q/(hP)(1 − e^{−mL}) and
+// θ(x ≥ L) = q/(hP)·(1 − e^{−2mL})/2·e^{−m(x−L)} (as L → 0, the point source
+// above).
+TEST(SteadyState, MotorHeatEnteringOverALengthFollowsItsClosedForm) {
+    ScrewThermalParameters p = bareRod(3.0, 600);
+    const double Q = 10, L = 0.2;
+    p.c_motor_W_per_Nm2 = Q;  // with a mean squared torque of 1 (N·m)²: Q watts
+    p.motor_entry_m = L;
+    ScrewThermalModel model(p, kAmbient);
+    StepConditions c;
+    c.dt_s = 1e9;
+    c.ambient_begin_C = c.ambient_end_C = kAmbient;
+    c.mean_torque_squared_Nm2 = 1;
+    for (int i = 0; i < 6; ++i) model.step(c);
+    EXPECT_NEAR(model.energy().motor_J, 6 * Q * c.dt_s, 1e-9 * 6 * Q * c.dt_s);
+
+    const double m = finM(p);
+    const double level = Q / L / (p.h_W_m2K * p.perimeter_m());
+    const double atEnd = level * (1 - std::exp(-m * L));
+    const double beyond = level * (1 - std::exp(-2 * m * L)) / 2;
+    // The cell centre nearest the end lies half a cell in, where θ' ≈ 0.
+    EXPECT_NEAR(model.temperatures_C().front() - kAmbient, atEnd, 2e-3 * atEnd);
+    for (double x : {0.3, 0.5, 0.8}) {
+        const double exact = beyond * std::exp(-m * (x - L));
+        EXPECT_NEAR(model.temperatureAt_C(x) - kAmbient, exact, 2e-3 * exact) << "x = " << x;
+    }
+    // Entering within the end cell is the end cell's heat, as before.
+    ScrewThermalParameters point = p;
+    point.motor_entry_m = 0;
+    ScrewThermalParameters withinACell = p;
+    withinACell.motor_entry_m = 0.5 * p.cellWidth_m();
+    ScrewThermalModel a(point, kAmbient), b(withinACell, kAmbient);
+    a.step(c);
+    b.step(c);
+    EXPECT_EQ(a.temperatures_C(), b.temperatures_C());
+}
+
 // With insulated ends all heat leaves by convection, so at steady state
 // h P ∫θ dx = Q whatever the source distribution: the free-end thermal error
 // α∫θ dx = α Q / (h π d) must not depend on where the nut reciprocates.
