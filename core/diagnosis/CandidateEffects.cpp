@@ -98,11 +98,14 @@ void riseBeforeItsSensor(Signal& rise, double tau_s) {
 CandidateEffect lateOffScrew(const QString& channel, const QString& measures,
                              const QString& onTopOf,
                              std::function<void(double tau_s, ScrewRunInputs&)> undo) {
+    // A late air or structure sensor changes only what refraction and frame
+    // growth read; a late room sensor changes the room the screw sees.
     return {.cause = QStringLiteral("sensor_lag:") + channel,
             .parameters = {{QStringLiteral("tau"), QStringLiteral("s"), 600, 1, 7200}},
             .inputs = [undo](const double* v, ScrewRunInputs& in) { undo(v[0], in); },
             .measures = measures,
-            .on_top_of = onTopOf};
+            .on_top_of = onTopOf,
+            .output_only = !onTopOf.isEmpty()};
 }
 
 CandidateEffect physical(const QString& cause, std::vector<FreeParameter> parameters,
@@ -117,11 +120,13 @@ CandidateEffect onSensor(
     return {.cause = kind + QLatin1Char(':') + channel,
             .channel = channel,
             .parameters = {std::move(parameter)},
-            .readings = [channel, apply](const double* own, const ScrewRunInputs& in, const auto&,
-                                         ScrewRunOutputs& out) {
-                const int s = sensorIndex(in, channel);
-                if (s >= 0) apply(own[0], in, out.sensor_C[std::size_t(s)], std::size_t(s));
-            }};
+            .readings =
+                [channel, apply](const double* own, const ScrewRunInputs& in, const auto&,
+                                 ScrewRunOutputs& out) {
+                    const int s = sensorIndex(in, channel);
+                    if (s >= 0) apply(own[0], in, out.sensor_C[std::size_t(s)], std::size_t(s));
+                },
+            .output_only = true};
 }
 
 /// Whether the runs move at more than one speed (top feeds 10 % apart or
@@ -172,13 +177,25 @@ std::vector<CandidateEffect> candidateEffects(
     for (const auto& r : runs) torque = torque && !r.torque_Nm.empty();
     // The motor's copper loss reaches the screw through the motor housing and
     // flange, minutes late: a first-order lag on τ², its time constant free.
+    // It enters through the coupling, flange and fixed bearing's seat, over a
+    // length that is free too (up to a quarter of the screw, 200 mm at most):
+    // heat put into the end cell alone where it enters over 90 mm leaves a
+    // structure along the first tenth of the axis that other candidates take.
+    const double entryLimit_mm = runs.empty() || !runs.front().screw
+                                     ? 200
+                                     : std::min(200.0, runs.front().screw->length_mm / 4);
     if (torque)
         candidates.push_back(
             {.cause = QStringLiteral("motor_heat"),
              .parameters = {{QStringLiteral("c_motor"), QStringLiteral("W/(N·m)²"), 0.01, 0, 20},
-                            {QStringLiteral("tau"), QStringLiteral("s"), 120, 1, 3600}},
-             .physics = [](const double* v,
-                           physics::ScrewThermalParameters& s) { s.c_motor_W_per_Nm2 = v[0]; },
+                            {QStringLiteral("tau"), QStringLiteral("s"), 120, 1, 3600},
+                            {QStringLiteral("entry"), QStringLiteral("mm"),
+                             std::min(40.0, entryLimit_mm / 2), 0, entryLimit_mm}},
+             .physics =
+                 [](const double* v, physics::ScrewThermalParameters& s) {
+                     s.c_motor_W_per_Nm2 = v[0];
+                     s.motor_entry_m = v[2] * 1e-3;
+                 },
              .inputs =
                  [](const double* v, ScrewRunInputs& in) {
                      std::vector<double>& q = in.mean_torque_squared_Nm2;
@@ -220,11 +237,12 @@ std::vector<CandidateEffect> candidateEffects(
         candidates.push_back(
             {.cause = QStringLiteral("sensor_offset:") + channelOf(ChannelRole::Ambient),
              .parameters = {{QStringLiteral("offset"), QStringLiteral("K"), 0, -10, 10}},
-             .readings = [](const double* v, const ScrewRunInputs&, const auto&,
-                            ScrewRunOutputs& out) {
-                 for (auto& sensor : out.sensor_C)
-                     for (double& t : sensor) t -= v[0];
-             }});
+             .readings =
+                 [](const double* v, const ScrewRunInputs&, const auto&, ScrewRunOutputs& out) {
+                     for (auto& sensor : out.sensor_C)
+                         for (double& t : sensor) t -= v[0];
+                 },
+             .output_only = true});
     // A late room sensor: the screw followed the room the sensor shows only
     // τ later. Lags on the air and structure sensors act only through
     // refraction and frame growth (the base model reads neither), so they
@@ -244,12 +262,14 @@ std::vector<CandidateEffect> candidateEffects(
     if (allRunsHave(runs, ChannelRole::Air))
         candidates.push_back({.cause = QStringLiteral("air_refraction"),
                               .parameters = {{QStringLiteral("fraction"), QString(), 0, -5, 5}},
-                              .readings = [](const double* v, const ScrewRunInputs& in,
-                                             const auto& at, ScrewRunOutputs& out) {
-                                  addToErrors(out, at, in.air_rise_K, in,
-                                              kEdlen_ppm_per_K * 1e-3 * v[0],
-                                              [&](double x) { return x + in.dead_path_mm; });
-                              }});
+                              .readings =
+                                  [](const double* v, const ScrewRunInputs& in, const auto& at,
+                                     ScrewRunOutputs& out) {
+                                      addToErrors(out, at, in.air_rise_K, in,
+                                                  kEdlen_ppm_per_K * 1e-3 * v[0],
+                                                  [&](double x) { return x + in.dead_path_mm; });
+                                  },
+                              .output_only = true});
     if (allRunsHave(runs, ChannelRole::Structure))
         // The structure is massive: its growth follows the measured surface
         // temperature with a lag of up to hours.
@@ -258,11 +278,13 @@ std::vector<CandidateEffect> candidateEffects(
              .parameters = {{QStringLiteral("g"), QStringLiteral("µm/K"), 0, -50, 50},
                             {QStringLiteral("tau"), QStringLiteral("s"),
                              structureLagStart_s(runs, baseResiduals), 1, 6 * 3600}},
-             .readings = [](const double* v, const ScrewRunInputs& in, const auto& at,
-                            ScrewRunOutputs& out) {
-                 addToErrors(out, at, lagged(in.structure_rise_K, v[1]), in, v[0],
-                             [](double) { return 1.0; });
-             }});
+             .readings =
+                 [](const double* v, const ScrewRunInputs& in, const auto& at,
+                    ScrewRunOutputs& out) {
+                     addToErrors(out, at, lagged(in.structure_rise_K, v[1]), in, v[0],
+                                 [](double) { return 1.0; });
+                 },
+             .output_only = true});
     return candidates;
 }
 

@@ -35,6 +35,10 @@ struct CandidateEffect {
     /// The cause it can only act through (a late air sensor through
     /// air_refraction): tested in the second step, on top of that cause.
     QString on_top_of = {};
+    /// It changes only the readings (or the air and structure rises they
+    /// read), not what the screw simulation computes: it is fitted on the
+    /// step's simulation, with no new one (OutputEffectFit.h).
+    bool output_only = false;
 };
 
 /// Every candidate the training runs can support, starting from the base fit

@@ -55,8 +55,11 @@ QString effectWords(const Finding& f) {
             .arg(v, 0, 'f', 2)
             .arg(std::pow(1500.0 / 800.0, v - 1), 0, 'f', 2);
     if (base == QLatin1String("motor_heat"))
-        return QStringLiteral("the servo motor heats the fixed end: %1 W per (N·m)² of torque")
-            .arg(v, 0, 'g', 3);
+        return QStringLiteral(
+                   "the servo motor heats the fixed end: %1 W per (N·m)² of torque, entering "
+                   "over the first %2 mm")
+            .arg(v, 0, 'g', 3)
+            .arg(value(f, 2), 0, 'f', 0);
     if (base == QLatin1String("sensor_lag") && f.effect.channel.isEmpty())
         return QStringLiteral(
                    "sensor %1 follows the %2 with a first-order lag of %3 s: the axis moved "
@@ -113,25 +116,69 @@ StepBase adoptedStepBase(std::vector<CandidateEffect> effects, const Finding& ad
             adopted.test_after};
 }
 
-std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffect& candidate,
-                                      const std::vector<double>& ownStart, int step,
-                                      const StepData& data) {
+namespace {
+
+/// An effect that changes the heat flow, fitted on the screening grid from the
+/// step's values and from the priors: the better of the two by its training
+/// cost.
+std::optional<FittedExtension> screenHeatFlowEffect(const StepBase& base,
+                                                    const CandidateEffect& candidate,
+                                                    const std::vector<double>& ownStart,
+                                                    const StepData& data) {
     std::vector<CandidateEffect> effects = base.effects;
     effects.push_back(candidate);
-    std::vector<double> start = base.model->values();
-    start.insert(start.end(), ownStart.begin(), ownStart.end());
-    auto model = std::make_shared<models::HeatTransferModel>(base.model->options(),
-                                                             extendedModel(effects, start));
+    std::vector<double> fromStep = base.model->values();
+    fromStep.insert(fromStep.end(), ownStart.begin(), ownStart.end());
+    std::vector<double> fromPriors = base.model->values();
+    const auto priors = models::baseScrewModel().parameters;
+    for (std::size_t i = 0; i < priors.size(); ++i) fromPriors[i] = priors[i].initial;
+    const models::HeatTransferOptions screening = screeningOptions(base.model->options());
+    std::optional<FittedExtension> best;
+    double bestCost = INFINITY;
+    for (const std::vector<double>& start : {fromStep, fromPriors}) {
+        auto coarse =
+            std::make_shared<models::HeatTransferModel>(screening, extendedModel(effects, start));
+        coarse->setCancelCheck(data.cancelled);
+        models::FitSummary fit = coarse->fit(data.train);
+        if (data.cancelled()) return std::nullopt;
+        if (!fit.success || !(fit.metrics.at(QStringLiteral("final_cost")) < bestCost)) continue;
+        bestCost = fit.metrics.at(QStringLiteral("final_cost"));
+        fit.notes << QStringLiteral("screened on a %1-cell grid in %2 s steps")
+                         .arg(kScreeningCells)
+                         .arg(kScreeningStep_s);
+        best = FittedExtension{coarse, std::move(fit)};
+    }
+    return best;
+}
+
+/// `screened` fitted again on the grid of `options`, from its screening values.
+std::optional<FittedExtension> refined(const FittedExtension& screened,
+                                       const models::HeatTransferOptions& options,
+                                       const StepData& data) {
+    models::ScrewModelVariant variant = screened.model->variant();
+    for (std::size_t i = 0; i < variant.parameters.size(); ++i)
+        variant.parameters[i].initial = screened.model->values()[i];
+    auto model = std::make_shared<models::HeatTransferModel>(options, std::move(variant));
     model->setCancelCheck(data.cancelled);
+    FittedExtension fitted{model, model->fit(data.train)};
+    if (!fitted.fit.success || data.cancelled()) return std::nullopt;
+    return fitted;
+}
+
+/// The finding of `candidate` fitted as `fitted` on top of `base`: its gain on
+/// the held-out runs on the quantity it shows in, BIC, whether it is a fit
+/// compromise, its significance and evidence.
+Finding judged(const StepBase& base, const CandidateEffect& candidate,
+               const FittedExtension& fitted, int step, const StepData& data) {
     Finding f;
     f.cause = candidate.cause;
     f.step = step;
     f.effect = candidate;
-    f.fit = model->fit(data.train);
-    if (!f.fit.success || data.cancelled()) return std::nullopt;
+    f.fit = fitted.fit;
     for (const auto& p : candidate.parameters)
         f.parameters.emplace_back(p.name, f.fit.parameters.at(p.name));
-    f.model = model;
+    f.model = fitted.model;
+    const auto& model = fitted.model;
 
     f.train_residuals = residualsOf(*model, data.train);
     f.test_residuals = residualsOf(*model, data.test);
@@ -211,6 +258,56 @@ std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffec
                                               ": it makes the positioning error worse, a fit "
                                               "compromise, not a cause");
     return f;
+}
+
+}  // namespace
+
+models::HeatTransferOptions screeningOptions(const models::HeatTransferOptions& options) {
+    models::HeatTransferOptions screening = options;
+    screening.cells = kScreeningCells;
+    screening.dt_s = kScreeningStep_s;
+    return screening;
+}
+
+std::optional<StepBase> screeningStep(const StepBase& base,
+                                      const std::vector<models::RunData>& train,
+                                      const std::vector<models::RunData>& test,
+                                      const std::function<bool()>& cancelled) {
+    models::ScrewModelVariant variant = base.model->variant();
+    for (std::size_t i = 0; i < variant.parameters.size(); ++i)
+        variant.parameters[i].initial = base.model->values()[i];
+    auto model = std::make_shared<models::HeatTransferModel>(
+        screeningOptions(base.model->options()), std::move(variant));
+    model->setCancelCheck(cancelled);
+    if (!model->fit(train).success) return std::nullopt;
+    StepBase coarse = baseStep(model, train, test);
+    coarse.effects = base.effects;
+    return coarse;
+}
+
+std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffect& candidate,
+                                      const std::vector<double>& ownStart, int step,
+                                      const StepData& data) {
+    if (candidate.output_only && data.simulation) {
+        const auto fitted = data.simulation->fit(candidate, ownStart, data.cancelled);
+        if (!fitted || data.cancelled()) return std::nullopt;
+        return judged(base, candidate, *fitted, step, data);
+    }
+    const auto screened = screenHeatFlowEffect(base, candidate, ownStart, data);
+    if (!screened || data.cancelled()) return std::nullopt;
+    // Judged on the screening grid against the step's model on that grid;
+    // refined on the step's own grid only where the gain there is one the
+    // candidate could be named for.
+    if (data.screening) {
+        Finding coarse = judged(*data.screening, candidate, *screened, step, data);
+        if (!(coarse.gain.reduction > kRefineAbove * data.options.min_test_gain)) {
+            coarse.significant = false;
+            return coarse;
+        }
+    }
+    const auto fitted = refined(*screened, base.model->options(), data);
+    if (!fitted || data.cancelled()) return std::nullopt;
+    return judged(base, candidate, *fitted, step, data);
 }
 
 QString evidenceFor(const Finding& f, const QStringList& testRuns) {

@@ -37,6 +37,15 @@ std::vector<Finding> testCandidates(
     const StepBase& base,
     const std::vector<std::pair<CandidateEffect, std::vector<double>>>& candidates, int step,
     const StepData& data, std::atomic<double>* done, double from, double to) {
+    // The step's simulation, shared by the effects on the readings, and its
+    // model on the screening grid, for the effects on the heat flow.
+    const StepSimulation simulation(base.model, base.effects, data.train);
+    const std::optional<StepBase> screening =
+        screeningStep(base, data.train, data.test, data.cancelled);
+    if (data.cancelled()) throw Cancelled{};
+    StepData withSimulation = data;
+    withSimulation.simulation = &simulation;
+    withSimulation.screening = screening ? &*screening : nullptr;
     std::vector<std::optional<Finding>> scored(candidates.size());
     std::vector<std::exception_ptr> failed(candidates.size());
     std::atomic<std::size_t> next{0};
@@ -45,8 +54,8 @@ std::vector<Finding> testCandidates(
             *done = from + (to - from) * double(k) / double(candidates.size());
             if (data.cancelled()) return;
             try {
-                scored[k] =
-                    scoreCandidate(base, candidates[k].first, candidates[k].second, step, data);
+                scored[k] = scoreCandidate(base, candidates[k].first, candidates[k].second, step,
+                                           withSimulation);
             } catch (...) {
                 failed[k] = std::current_exception();
             }
@@ -213,7 +222,13 @@ DiagnosisResult diagnose(const Campaign& campaign, const DiagnosisOptions& optio
                     // axis, or on a sensor the bent fit pulled toward its
                     // reading (a nut sensor's offset under motor heat).
                     const bool showsOnTraining = f.bic_drop > options.min_bic_drop;
-                    if (!(f.gain.reduction > 0 || showsOnTraining) || f.cause == first->cause)
+                    // An effect on the heat flow is tried again whatever its
+                    // step-1 figures: its fit bends to follow the first cause
+                    // (motor heat spreading over the screw to explain a nut
+                    // sensor's offset) and scores against it.
+                    const bool onHeatFlow = !f.effect.output_only;
+                    if (!(f.gain.reduction > 0 || showsOnTraining || onHeatFlow) ||
+                        f.cause == first->cause)
                         continue;
                     std::vector<double> own;
                     for (const auto& p : f.parameters) own.push_back(p.second.value);

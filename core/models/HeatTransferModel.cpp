@@ -65,6 +65,12 @@ ScrewModelVariant baseScrewModel(bool material) {
 HeatTransferModel::HeatTransferModel(HeatTransferOptions options, ScrewModelVariant variant)
     : options_(options), variant_(std::move(variant)) {}
 
+HeatTransferModel::HeatTransferModel(HeatTransferOptions options, ScrewModelVariant variant,
+                                     std::vector<double> values)
+    : options_(options), variant_(std::move(variant)), values_(std::move(values)) {
+    markFitted({});
+}
+
 QString HeatTransferModel::describe() const {
     return QStringLiteral(
                "1-D conduction along the screw, nut and bearings heating in "
@@ -104,9 +110,9 @@ std::optional<physics::ScrewThermalParameters> HeatTransferModel::fittedScrew(co
     return parametersWith(values_.data(), run);
 }
 
-ScrewRunOutputs HeatTransferModel::simulateWith(const double* values, const RunData& run,
-                                                const ScrewRunInputs& inputs,
-                                                const std::vector<PredictionPoint>& at) const {
+ScrewRunOutputs HeatTransferModel::simulate(const double* values, const RunData& run,
+                                            const ScrewRunInputs& inputs,
+                                            const std::vector<PredictionPoint>& at) const {
     // An effect on the inputs works on a copy: the prepared run serves every
     // evaluation of the fit.
     std::optional<ScrewRunInputs> changed;
@@ -119,7 +125,7 @@ ScrewRunOutputs HeatTransferModel::simulateWith(const double* values, const RunD
 
 Eigen::VectorXd HeatTransferModel::predictRun(const RunData& run,
                                               const std::vector<PredictionPoint>& at) const {
-    const auto out = simulateWith(values_.data(), run, prepared(run), at);
+    const auto out = simulate(values_.data(), run, prepared(run), at);
     return Eigen::Map<const Eigen::VectorXd>(out.error_um.data(),
                                              Eigen::Index(out.error_um.size()));
 }
@@ -127,10 +133,15 @@ Eigen::VectorXd HeatTransferModel::predictRun(const RunData& run,
 std::size_t HeatTransferModel::writeResiduals(const double* values, const RunData& run,
                                               const ScrewRunInputs& inputs, double huberSigmas,
                                               double* out) const {
-    const auto points = run.observationPoints();
-    const ScrewRunOutputs sim = simulateWith(values, run, inputs, points);
+    return normalisedResiduals(simulate(values, run, inputs, run.observationPoints()), run, inputs,
+                               huberSigmas, out);
+}
+
+std::size_t HeatTransferModel::normalisedResiduals(const ScrewRunOutputs& sim, const RunData& run,
+                                                   const ScrewRunInputs& inputs, double huberSigmas,
+                                                   double* out) const {
     std::size_t i = 0;
-    for (std::size_t o = 0; o < points.size(); ++o)
+    for (std::size_t o = 0; o < run.observations.size(); ++o)
         out[i++] =
             robust((run.observations[o].error_um - sim.error_um[o]) / options_.error_sigma_um,
                    huberSigmas);

@@ -76,6 +76,11 @@ class HeatTransferModel : public ThermalErrorModel {
 public:
     explicit HeatTransferModel(HeatTransferOptions options = {},
                                ScrewModelVariant variant = baseScrewModel());
+    /// A model of the positioning error with `values` (in the variant's order)
+    /// found elsewhere: the diagnosis fits an effect on the readings on the
+    /// base simulation, then predicts with the whole extended model.
+    HeatTransferModel(HeatTransferOptions options, ScrewModelVariant variant,
+                      std::vector<double> values);
 
     QString name() const override { return QStringLiteral("heat-transfer"); }
     QString describe() const override;
@@ -90,6 +95,20 @@ public:
     /// steps online. None (and why) before a fit or without a screw.
     std::optional<physics::ScrewThermalParameters> fittedScrew(const RunData& run,
                                                                QString* why) const;
+    /// The run prepared for this model's step, room and grid.
+    ScrewRunInputs prepared(const RunData& run) const;
+    /// The simulation and the readings at `values` (any, fitted or not) for
+    /// the prepared run `inputs`, at the points `at`.
+    ScrewRunOutputs simulate(const double* values, const RunData& run, const ScrewRunInputs& inputs,
+                             const std::vector<PredictionPoint>& at) const;
+    /// Positioning errors, and the screw sensors' readings when they are fitted.
+    std::size_t readingCount(const RunData& run, const ScrewRunInputs& inputs) const;
+    /// The residuals the fit minimises (measured − `sim` at the run's
+    /// observations, then each sensor's, over their nominal σ, Huber beyond
+    /// `huberSigmas`) into `out`; returns how many.
+    std::size_t normalisedResiduals(const ScrewRunOutputs& sim, const RunData& run,
+                                    const ScrewRunInputs& inputs, double huberSigmas,
+                                    double* out) const;
 
 protected:
     FitSummary fitRuns(const std::vector<RunData>& training) override;
@@ -101,18 +120,11 @@ protected:
     double cost(const std::vector<double>& values, const std::vector<RunData>& runs) const;
 
 private:
-    /// Positioning errors, and the screw sensors' readings when they are fitted.
-    std::size_t readingCount(const RunData& run, const ScrewRunInputs& inputs) const;
     /// Writes the normalised residuals of one run (Huber at `huberSigmas`,
     /// none when infinite) to `out`; returns how many.
     std::size_t writeResiduals(const double* values, const RunData& run,
                                const ScrewRunInputs& inputs, double huberSigmas, double* out) const;
     physics::ScrewThermalParameters parametersWith(const double* values, const RunData& run) const;
-    /// The run prepared for this model's step, room and grid.
-    ScrewRunInputs prepared(const RunData& run) const;
-    ScrewRunOutputs simulateWith(const double* values, const RunData& run,
-                                 const ScrewRunInputs& inputs,
-                                 const std::vector<PredictionPoint>& at) const;
 
     HeatTransferOptions options_;
     ScrewModelVariant variant_;

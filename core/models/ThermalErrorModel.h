@@ -73,6 +73,12 @@ protected:
     /// One value per point. Throws ModelError on bad data.
     virtual Eigen::VectorXd predictRun(const RunData& run,
                                        const std::vector<PredictionPoint>& at) const = 0;
+    /// For a model whose values were found outside fit() (the diagnosis's
+    /// fits of an effect on the readings): it predicts `targetChannel` from now on.
+    void markFitted(const QString& targetChannel) {
+        fitted_ = true;
+        target_channel_ = targetChannel;
+    }
 
 private:
     /// predictRun, checked for a value per point and finiteness.
