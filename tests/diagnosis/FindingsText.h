@@ -1,14 +1,12 @@
 #pragma once
-// What the hidden-effect suites print: every candidate's figures in a
-// diagnosis, one indented line each (so that a wrong verdict shows why), the
-// confusion matrix and the reliability of the confidence, and what every
-// diagnosis of the suites must hold.
+// What the hidden-effect suites show of a diagnosis when a case fails: every
+// candidate's figures, one indented line each (so that a wrong verdict shows
+// why); the causes it named; and what every diagnosis of the suites must hold.
 #include <gtest/gtest.h>
 
 #include <QString>
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <map>
 #include <utility>
 #include <vector>
@@ -32,16 +30,6 @@ inline QString findingsText(const diagnosis::DiagnosisResult& r) {
 
 /// Rows: the hidden cause(s); columns: each verdict given and how often.
 using ConfusionMatrix = std::map<QString, std::map<QString, int>>;
-
-inline void printConfusion(const char* title, const ConfusionMatrix& confusion, int rowWidth) {
-    std::cout << "\n" << title << " (rows: hidden, columns: verdict)\n";
-    for (const auto& [expected, verdicts] : confusion) {
-        std::cout << "  " << qPrintable(expected.leftJustified(rowWidth));
-        for (const auto& [verdict, n] : verdicts)
-            std::cout << "  " << qPrintable(verdict) << " ×" << n;
-        std::cout << "\n";
-    }
-}
 
 /// One cause a diagnosis named, what was hidden ("a", "a+b", "none",
 /// "unexplained") and the confidence reported with the cause. A finding is
@@ -80,35 +68,5 @@ inline void expectExclusiveConfidences(const diagnosis::DiagnosisResult& r, cons
 /// A confidence that means something: over the causes named, its Brier score
 /// stays below this (a constant 0.7 on causes that are all right scores 0.09).
 constexpr double kMaxBrier = 0.05;
-
-/// Of the causes named with a confidence in each band, how many, how many
-/// right and their mean confidence (calibrated: the two agree); over all, the
-/// Brier score (mean squared difference of confidence and rightness); then
-/// the wrong ones. Returns the Brier score.
-inline double printReliability(const char* title, const std::vector<NamedCause>& named) {
-    std::cout << "\n" << title << ": confidence band, causes named, right, mean confidence\n";
-    for (const auto& [lo, hi] :
-         std::vector<std::pair<double, double>>{{0, 0.5}, {0.5, 0.7}, {0.7, 0.9}, {0.9, 1.01}}) {
-        int n = 0, right = 0;
-        double sum = 0;
-        for (const NamedCause& c : named)
-            if (c.confidence >= lo && c.confidence < hi) {
-                ++n;
-                right += c.right();
-                sum += c.confidence;
-            }
-        std::cout << "  [" << lo << ", " << std::min(hi, 1.0) << ")  " << n << "  " << right << "  "
-                  << (n ? sum / n : 0.0) << "\n";
-    }
-    double brier = 0;
-    for (const NamedCause& c : named) brier += std::pow(c.confidence - c.right(), 2);
-    if (!named.empty()) brier /= double(named.size());
-    std::cout << "  Brier score " << brier << " over " << named.size() << " causes named\n";
-    for (const NamedCause& c : named)
-        if (!c.right())
-            std::cout << "  wrong: " << qPrintable(c.cause) << " (confidence " << c.confidence
-                      << "), hidden " << qPrintable(c.hidden) << "\n";
-    return brier;
-}
 
 }  // namespace driftlab::test
