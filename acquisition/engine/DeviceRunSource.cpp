@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "acquisition/engine/DeviceEvents.h"
+
 namespace driftlab::engine {
 
 DeviceRunSource::DeviceRunSource(const DeviceRigSpec& spec, const std::vector<QString>& columns,
@@ -24,8 +26,7 @@ DeviceRunSource::DeviceRunSource(const DeviceRigSpec& spec, const std::vector<QS
                              if (k < m_temperatureColumn.size())
                                  set(m_temperatureColumn[k], r.values[k], r.time_utc);
                      });
-    watch(m_temperature.get(),
-          QStringLiteral("temperature module %1").arg(spec.temperature_url.endpoint()));
+    watch(m_temperature.get(), temperatureModuleSource(spec.temperature_url.endpoint()));
     m_temperature->start();
     if (spec.controller_url) {
         m_controller = std::make_unique<devices::ControllerDevice>(*spec.controller_url, options);
@@ -70,16 +71,14 @@ void DeviceRunSource::watch(Device* device, const QString& source) {
     // One error per connect cycle (the worker's rule), so one "lost" per outage.
     QObject::connect(device, &Device::errorOccurred, [this, source](const QString& message) {
         ++m_lostDevices;
-        m_events.push_back({QStringLiteral("error"), source, message});
+        m_events.push_back(deviceLostEvent(source, message));
     });
     QObject::connect(
         device, &Device::gap, [this, source](const QDateTime& from, const QDateTime& to) {
             m_lostDevices = std::max(0, m_lostDevices - 1);
-            m_events.push_back(
-                {QStringLiteral("warning"), source,
-                 QStringLiteral("gap: no data from %1 to %2 (%3 s); reconnected")
-                     .arg(from.toString(Qt::ISODateWithMs), to.toString(Qt::ISODateWithMs))
-                     .arg(from.msecsTo(to) / 1000.0)});
+            m_events.push_back(deviceBackEvent(source, from.toString(Qt::ISODateWithMs),
+                                               to.toString(Qt::ISODateWithMs),
+                                               from.msecsTo(to) / 1000.0));
         });
 }
 

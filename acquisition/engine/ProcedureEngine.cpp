@@ -254,7 +254,10 @@ bool ProcedureEngine::playRun(RunPlayback& pb, QString* error) {
         }
     };
     auto logSourceEvents = [&] {
-        for (const SourceEvent& e : source->takeEvents()) {
+        std::vector<SourceEvent> events = source->takeEvents();
+        // A simulated run replayed to where its log ends has logged these already.
+        if (!m_rig.realTime() && pb.replaying()) return;
+        for (const SourceEvent& e : events) {
             pb.logger.appendEvent(e.level, e.source, e.message);
             if (m_observers.device_event) m_observers.device_event(e);
         }

@@ -4,6 +4,8 @@
 
 #include "acquisition/engine/DeviceRig.h"
 #include "acquisition/engine/SimulatedRig.h"
+#include "core/procedures/ProcedurePlan.h"
+#include "core/rig/ModuleOutage.h"
 #include "core/rig/RigEffects.h"
 
 namespace driftlab::engine {
@@ -14,8 +16,63 @@ std::nullptr_t fail(RigError* error, const QString& option, const QString& messa
     return nullptr;
 }
 
+/// The module outages of a simulated run of `procedure`, each in one of its
+/// runs; nullopt with `error` on a bad one.
+std::optional<std::vector<rig::ModuleOutage>> moduleOutages(const RigOptions& options,
+                                                            const procedures::Procedure& procedure,
+                                                            RigError* error) {
+    std::vector<rig::ModuleOutage> outages;
+    if (options.outages.isEmpty()) return outages;
+    const QString option = QStringLiteral("outage");
+    if (procedure.on_device_loss == procedures::DeviceLossPolicy::Pause) {
+        fail(error, option,
+             QStringLiteral("procedure '%1' pauses on a lost device (on_device_loss: pause); "
+                            "the simulated rig logs through an outage, as with continue")
+                 .arg(procedure.name));
+        return std::nullopt;
+    }
+    std::vector<procedures::PlannedRun> planned;
+    try {
+        planned = procedures::planRuns(procedure);
+    } catch (const std::exception& e) {
+        fail(error, option, QStringLiteral("procedure '%1': %2").arg(procedure.name, e.what()));
+        return std::nullopt;
+    }
+    QStringList ids;
+    for (const auto& run : planned) ids << run.id;
+    for (const QString& text : options.outages) {
+        QString why;
+        const auto outage = rig::parseModuleOutage(text, &why);
+        if (!outage) {
+            fail(error, option, why);
+            return std::nullopt;
+        }
+        const auto run = std::find_if(planned.begin(), planned.end(),
+                                      [&](const auto& r) { return r.id == outage->run_id; });
+        if (run == planned.end()) {
+            fail(error, option,
+                 QStringLiteral("'%1': procedure '%2' has no run '%3' (its runs: %4)")
+                     .arg(text, procedure.name, outage->run_id, ids.join(QStringLiteral(", "))));
+            return std::nullopt;
+        }
+        if (outage->from_s >= run->duration_s) {
+            fail(error, option,
+                 QStringLiteral("'%1': run %2 ends at %3 s, before the outage starts")
+                     .arg(text, run->id)
+                     .arg(run->duration_s));
+            return std::nullopt;
+        }
+        outages.push_back(*outage);
+    }
+    return outages;
+}
+
 std::unique_ptr<TestRig> makeDeviceRig(const RigOptions& options, RigError* error) {
     QString why;
+    if (!options.outages.isEmpty())
+        return fail(error, QStringLiteral("outage"),
+                    QStringLiteral("for the simulated rig (--rig sim); a real module's "
+                                   "outages are its own"));
     DeviceRigSpec spec;
     const auto url = modbus::parseModbusUrl(options.rig, &why);
     if (!url) return fail(error, QStringLiteral("rig"), why);
@@ -73,6 +130,9 @@ std::unique_ptr<TestRig> makeRig(const RigOptions& options, const procedures::Pr
             if (!rig::applyEffect(spec.effects, assignment, &why))
                 return fail(error, QStringLiteral("effect"), why);
         }
+        auto outages = moduleOutages(options, procedure, error);
+        if (!outages) return nullptr;
+        spec.module_outages = std::move(*outages);
         spec.campaign_name = procedure.name;
         spec.travel_mm = procedure.travel_mm;
         spec.sample_interval_s = procedure.sample_interval_s;

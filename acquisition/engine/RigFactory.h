@@ -18,6 +18,7 @@ struct RigOptions {
     // Simulated rig
     unsigned seed = 1;
     QStringList effects;  ///< ID=VALUE, as `simulate --effect`
+    QStringList outages;  ///< RUN@FROM-TO: the temperature module does not answer then
     // Modbus rig
     QString device_map_path;     ///< the temperature module's register map
     QString controller_url;      ///< empty: no controller link
@@ -28,7 +29,7 @@ struct RigOptions {
 };
 
 /// Why a rig could not be built: the option at fault ("rig", "device-map",
-/// "controller", "interferometer", "effect", …) and the reason.
+/// "controller", "interferometer", "effect", "outage", …) and the reason.
 struct RigError {
     QString option;
     QString message;

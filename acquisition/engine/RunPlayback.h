@@ -26,6 +26,9 @@ struct RunPlayback {
     /// to there without logging; a real one goes on from there (the gap is
     /// the time it was down).
     void resumeFrom(const db::LoggedRunState& state, bool realTime);
+    /// A resumed run not yet past the end of its log (what a simulated rig
+    /// reports meanwhile is logged already).
+    bool replaying() const { return time_s <= m_skipSamples_s; }
     /// Logs what of `out` the log does not hold yet and tells the observers.
     void log(const rig::RunOutput& out, const RowObserver& observer,
              const ReadingObserver& readingObserver = {});

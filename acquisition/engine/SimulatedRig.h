@@ -4,6 +4,8 @@
 // runs from the spindle-test simulator, played out in time. Every run has a
 // seed drawn from the rig's seed in procedure order, so the same procedure
 // gives the same campaign, and a resumed run replays to where it stopped.
+// The spec's module outages leave the temperature columns empty and the log
+// what a device rig writes for a lost module (DeviceEvents.h).
 
 #include "acquisition/engine/TestRig.h"
 #include "core/rig/RigSpec.h"

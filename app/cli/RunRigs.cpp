@@ -17,6 +17,11 @@ const QCommandLineOption kEffect{
     QStringLiteral("effect"),
     QStringLiteral("Simulated rig: hide an effect, ID=VALUE (as `simulate --effect`)."),
     QStringLiteral("ID=VALUE")};
+const QCommandLineOption kOutage{
+    QStringLiteral("outage"),
+    QStringLiteral("Simulated rig: the temperature module does not answer in run RUN from FROM "
+                   "to TO s of run time (repeatable; as `simulate --outage`)."),
+    QStringLiteral("RUN@FROM-TO")};
 
 const QCommandLineOption kDeviceMap{
     QStringLiteral("device-map"),
@@ -51,7 +56,8 @@ const QCommandLineOption kPoll{QStringLiteral("poll-interval-s"),
 }  // namespace
 
 QList<QCommandLineOption> rigOptions() {
-    return {kSeed, kEffect, kDeviceMap, kController, kInterferometer, kTolerance, kMachine, kPoll};
+    return {kSeed,           kEffect,    kOutage,  kDeviceMap, kController,
+            kInterferometer, kTolerance, kMachine, kPoll};
 }
 
 std::unique_ptr<engine::TestRig> makeRig(const QCommandLineParser& parser, const QString& rig,
@@ -62,6 +68,7 @@ std::unique_ptr<engine::TestRig> makeRig(const QCommandLineParser& parser, const
     options.seed = parser.value(kSeed).toUInt(&ok);
     if (!ok) throw CliError(QStringLiteral("--seed: not a non-negative integer"), 2);
     options.effects = parser.values(kEffect);
+    options.outages = parser.values(kOutage);
     options.device_map_path = parser.value(kDeviceMap);
     options.controller_url = parser.value(kController);
     options.interferometer_url = parser.value(kInterferometer);

@@ -7,6 +7,7 @@
 #include "app/cli/CliCommon.h"
 #include "core/bundle/BundleWriter.h"
 #include "core/rig/CampaignSimulator.h"
+#include "core/rig/ModuleOutage.h"
 #include "ui/plots/ScrewStatePlots.h"
 
 namespace driftlab::cli {
@@ -34,11 +35,16 @@ int simulateCommand(const QStringList& args) {
         QStringLiteral("spindle-runs"),
         QStringLiteral("Add N spindle runs SP1…SPN, each with its own speed programme (1–9)."),
         QStringLiteral("N")};
+    const QCommandLineOption outage{
+        QStringLiteral("outage"),
+        QStringLiteral("The temperature module does not answer in run RUN from FROM to TO s of "
+                       "run time: its columns are empty there (repeatable), e.g. S3@3000-3300."),
+        QStringLiteral("RUN@FROM-TO")};
     const QCommandLineOption plots{
         QStringLiteral("plots"),
         QStringLiteral("Write PNG plots of the first run's true screw state into DIR."),
         QStringLiteral("DIR")};
-    parseArguments(parser, args, {out, effect, seed, runs, spindle, spindleRuns, plots},
+    parseArguments(parser, args, {out, effect, seed, runs, spindle, spindleRuns, outage, plots},
                    {{}, {}, {}, {out}});
 
     rig::RigSpec spec;
@@ -66,6 +72,20 @@ int simulateCommand(const QStringList& args) {
         spec.spindle_runs = parser.value(spindleRuns).toInt(&ok);
         if (!ok || spec.spindle_runs < 1 || spec.spindle_runs > 9)
             throw CliError(QStringLiteral("--spindle-runs: not a number of runs from 1 to 9"), 2);
+    }
+    for (const QString& text : parser.values(outage)) {
+        QString error;
+        const auto parsed = rig::parseModuleOutage(text, &error);
+        if (!parsed) throw CliError(QStringLiteral("--outage: ") + error, 2);
+        QStringList ids;
+        for (const auto& r : spec.runs) ids << r.id;
+        for (int k = 1; k <= spec.spindle_runs; ++k) ids << QStringLiteral("SP%1").arg(k);
+        if (!ids.contains(parsed->run_id))
+            throw CliError(QStringLiteral("--outage: '%1': the campaign has no run '%2' (its runs: "
+                                          "%3)")
+                               .arg(text, parsed->run_id, ids.join(QStringLiteral(", "))),
+                           2);
+        spec.module_outages.push_back(*parsed);
     }
 
     rig::SimulationCallbacks callbacks;

@@ -71,7 +71,8 @@ struct ModelSection {
     QString not_applicable;
     QStringList runs;
     std::vector<ModelMatrix> models;
-    QString diagonal;  ///< what the diagonal is
+    QString diagonal;                   ///< what the diagonal is
+    std::vector<models::DataGap> gaps;  ///< holes in the log of the runs compared
 };
 
 struct DiagnosisSection {

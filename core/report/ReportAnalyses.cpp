@@ -24,6 +24,7 @@ ModelSection compareModels(const Campaign& campaign, const std::function<bool(do
         s.not_applicable = QStringLiteral("no model comparison: ") + data.error;
         return s;
     }
+    s.gaps = models::gapsOf(data.runs);
     const QStringList names = models::modelNames();
     for (int k = 0; k < names.size(); ++k) {
         models::CrossStateMatrix matrix = models::crossStateMatrix(

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "core/rig/AxisDrive.h"
+#include "core/rig/ModuleOutage.h"
 #include "core/rig/MovingStateProgramme.h"
 #include "core/rig/SimulatedAxisRun.h"
 #include "core/rig/SpindleTestSimulator.h"
@@ -76,6 +77,20 @@ void validateSpec(const RigSpec& spec, const physics::ScrewThermalParameters& sc
         checkChannel("sensor_lag", channel);
     for (const auto& [channel, offset] : spec.effects.sensor_offset_K)
         checkChannel("sensor_offset", channel);
+    for (int k = 1; k <= spec.spindle_runs; ++k) ids.insert(QStringLiteral("SP%1").arg(k));
+    for (const ModuleOutage& o : spec.module_outages) {
+        if (!ids.contains(o.run_id))
+            throw std::invalid_argument("simulated rig: module outage in run '" +
+                                        o.run_id.toStdString() + "', which the rig does not run");
+        if (!(o.from_s >= 0 && o.from_s < o.to_s))
+            throw std::invalid_argument(
+                QStringLiteral("simulated rig: module outage in run %1 from %2 s to %3 s: it "
+                               "must start at 0 s or later and end after it starts")
+                    .arg(o.run_id)
+                    .arg(o.from_s)
+                    .arg(o.to_s)
+                    .toStdString());
+    }
 }
 
 Run simulateMovingRun(const RunContext& ctx, const MovingStateRun& state, unsigned runSeed) {
@@ -207,6 +222,11 @@ Campaign simulateCampaign(const RigSpec& spec, const SimulationCallbacks& callba
         spindle.probe_noise_um = spec.probe_noise_um;
         campaign.runs.push_back(simulateSpindleTest(spindle, campaign.sample_columns));
     }
+    // The module's outages last: the sensors were read through them, so every
+    // draw and every lag state after an outage is that of the run without it.
+    const auto temperature = temperatureColumns(campaign.channels, campaign.sample_columns);
+    for (Run& run : campaign.runs)
+        blankOutages(outagesOf(spec.module_outages, run.id), temperature, run.samples);
     if (callbacks.progress) callbacks.progress(1.0);
     return campaign;
 }

@@ -71,6 +71,16 @@ struct EnvironmentSpec {
     double structure_lag_s = 2400;
 };
 
+/// A span of a run in which the rig's temperature module does not answer:
+/// every temperature column is missing from `from_s` up to (not including)
+/// `to_s`, run time; the controller's columns and the interferometer go on.
+struct ModuleOutage {
+    QString run_id;
+    double from_s = 0;
+    double to_s = 0;
+    bool operator==(const ModuleOutage&) const = default;
+};
+
 struct RigSpec {
     QString campaign_name = QStringLiteral("Simulated X axis, five moving states");
     physics::ScrewThermalParameters screw;  ///< the rig's truth; effects are applied on top
@@ -90,6 +100,8 @@ struct RigSpec {
     EnvironmentSpec environment;
     double temperature_noise_K = 0.02;
     double dropout_probability = 0;
+    /// The temperature module's outages (ModuleOutage.h), any order.
+    std::vector<ModuleOutage> module_outages;
     unsigned seed = 1;
 };
 

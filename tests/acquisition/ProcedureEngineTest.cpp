@@ -2,7 +2,8 @@
 // a logged campaign is the batch simulation's campaign, sample for sample;
 // pause, resume and abort at random points lose nothing; an aborted run
 // resumed is the run that was never aborted; ISO 230-3 ends its warm-up at
-// stabilisation.
+// stabilisation; the simulated module's outage is logged as a device rig
+// logs a lost module, once, even when the run is resumed after it.
 #include <gtest/gtest.h>
 
 #include <QSqlQuery>
@@ -59,6 +60,40 @@ void expectSameRuns(const Campaign& logged, const Campaign& batch) {
         EXPECT_EQ(logged.runs[r].positioning, batch.runs[r].positioning);
         EXPECT_EQ(logged.runs[r].motion, batch.runs[r].motion);
     }
+}
+
+/// "RUN level source: message" of every event of the store, in logging order.
+QStringList eventLog(const QString& path) {
+    QString error;
+    auto store = db::CampaignStore::open(path, db::StoreAccess::ReadOnly, &error);
+    EXPECT_TRUE(store) << error.toStdString();
+    QStringList events;
+    if (!store) return events;
+    QSqlQuery q(store->database());
+    q.exec(
+        QStringLiteral("SELECT r.name, e.level, e.source, e.message FROM event_log e "
+                       "JOIN run r ON r.id = e.run_id ORDER BY e.id"));
+    while (q.next())
+        events << q.value(0).toString() + " " + q.value(1).toString() + " " +
+                      q.value(2).toString() + ": " + q.value(3).toString();
+    return events;
+}
+
+/// The two events of S1's module outage from 600 s to 900 s, and no other of the module.
+void expectOneOutageLogged(const QStringList& events) {
+    const QString log = events.join('\n');
+    EXPECT_EQ(events.filter(QStringLiteral("temperature module")),
+              QStringList({"S1 error temperature module sim: sim: the module does not answer "
+                           "(simulated outage)",
+                           "S1 warning temperature module sim: gap: no data from 600 s to 900 s "
+                           "(300 s); reconnected"}))
+        << log.toStdString();
+}
+
+rig::RigSpec withS1Outage(const procedures::Procedure& p) {
+    rig::RigSpec spec = rigFor(p);
+    spec.module_outages = {{QStringLiteral("S1"), 600, 900}};
+    return spec;
 }
 
 }  // namespace
@@ -239,4 +274,50 @@ TEST(ProcedureEngine, LiveReadPathSeesEveryLoggedRowWhileTheRunGoesOn) {
     ASSERT_TRUE(id) << error.toStdString();
     EXPECT_GT(reads, 10);  // it read while the run went on, not once at the end
     EXPECT_EQ(seen, loadOnly(dir.filePath("lab.sqlite"), *id).runs.front().samples);
+}
+
+TEST(ProcedureEngine, ModuleOutageIsLoggedAsADeviceRigLogsALostModule) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("lab.sqlite");
+    const auto procedure = test::twoShortMovingStates();
+    engine::SimulatedRig rig(withS1Outage(procedure));
+    QString error;
+    const auto id = engine::ProcedureEngine(procedure, rig, storeAt(path)).run(&error);
+    ASSERT_TRUE(id) << error.toStdString();
+    const Campaign logged = loadOnly(path, *id);
+    expectSameRuns(logged, rig::simulateCampaign(withS1Outage(procedure)));
+    const SampleSeries& s1 = logged.runs.front().samples;
+    const auto& nut = s1.values[std::size_t(s1.columnIndex(QStringLiteral("T_nut")))];
+    const auto& position = s1.values[std::size_t(s1.columnIndex(kPositionColumn))];
+    int missing = 0;
+    for (std::size_t r = 0; r < s1.rowCount(); ++r) {
+        const bool lost = s1.time_s[r] >= 600 && s1.time_s[r] < 900;
+        EXPECT_EQ(std::isnan(nut[r]), lost) << s1.time_s[r];
+        EXPECT_FALSE(std::isnan(position[r])) << s1.time_s[r];
+        missing += lost;
+    }
+    EXPECT_EQ(missing, 30);
+    expectOneOutageLogged(eventLog(path));
+    EXPECT_EQ(test::runStatuses(path), QStringList({"S1=complete", "S2=complete"}));
+}
+
+TEST(ProcedureEngine, ModuleOutageIsLoggedOnceWhenTheRunIsResumedAfterIt) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("lab.sqlite");
+    const auto procedure = test::twoShortMovingStates();
+    engine::SimulatedRig rig(withS1Outage(procedure));
+    engine::EngineOptions options = storeAt(path);
+    engine::ProcedureEngine first(procedure, rig, options);
+    first.setProgressCallback([&](const engine::EngineProgress& p) {
+        if (p.time_s >= 1500) first.abort();
+    });
+    QString error;
+    const auto id = first.run(&error);
+    ASSERT_TRUE(id) << error.toStdString();
+    ASSERT_EQ(test::runStatuses(path), QStringList({"S1=interrupted"}));
+    options.resume_run_id = 1;
+    engine::ProcedureEngine second(procedure, rig, options);
+    ASSERT_TRUE(second.run(&error)) << error.toStdString();
+    expectSameRuns(loadOnly(path, *id), rig::simulateCampaign(withS1Outage(procedure)));
+    expectOneOutageLogged(eventLog(path));
 }

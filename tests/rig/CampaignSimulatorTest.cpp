@@ -1,5 +1,6 @@
 // The simulated rig writes whole campaigns: realistic magnitudes, a valid
-// bundle, every hidden effect visible where physics puts it, clear errors.
+// bundle, every hidden effect visible where physics puts it, a module outage
+// only where it is, clear errors.
 #include <gtest/gtest.h>
 
 #include <QTemporaryDir>
@@ -9,6 +10,7 @@
 #include "core/bundle/BundleReader.h"
 #include "core/bundle/BundleWriter.h"
 #include "core/rig/CampaignSimulator.h"
+#include "core/rig/ModuleOutage.h"
 
 using namespace driftlab;
 using namespace driftlab::rig;
@@ -264,6 +266,52 @@ TEST(CampaignSimulator, specsThatCannotRunAreRefusedWithTheReason) {
     s = shortSpec();
     s.runs.push_back(s.runs[0]);
     refused(s, "used twice");
+    s = shortSpec();
+    s.module_outages = {{QStringLiteral("S3"), 100, 200}};
+    refused(s, "module outage in run 'S3', which the rig does not run");
+    s = shortSpec();
+    s.module_outages = {{QStringLiteral("S1"), 200, 200}};
+    refused(s, "end after it starts");
+}
+
+TEST(CampaignSimulator, aModuleOutageEmptiesTheTemperatureColumnsOfItsSpanAndNothingElse) {
+    RigSpec spec = shortSpec({QStringLiteral("S1"), QStringLiteral("S3")});
+    spec.spindle_runs = 1;
+    const Campaign without = simulateCampaign(spec);
+    spec.module_outages = {{QStringLiteral("S3"), 2800, 3100}, {QStringLiteral("SP1"), 600, 900}};
+    const Campaign with = simulateCampaign(spec);
+    ASSERT_EQ(with.runs.size(), 3u);
+    const auto temperature = temperatureColumns(with.channels, with.sample_columns);
+    EXPECT_EQ(temperature.size(), 11u);  // six rig channels, five spindle ones
+    for (std::size_t r = 0; r < with.runs.size(); ++r) {
+        const driftlab::Run& a = with.runs[r];
+        const driftlab::Run& b = without.runs[r];
+        SCOPED_TRACE(a.id.toStdString());
+        EXPECT_EQ(a.positioning, b.positioning);
+        ASSERT_EQ(a.samples.time_s, b.samples.time_s);
+        const auto outages = outagesOf(spec.module_outages, a.id);
+        std::size_t blanked = 0;
+        for (std::size_t c = 0; c < a.samples.columns.size(); ++c) {
+            const bool isTemperature =
+                std::find(temperature.begin(), temperature.end(), c) != temperature.end();
+            for (std::size_t i = 0; i < a.samples.rowCount(); ++i) {
+                const double t = a.samples.time_s[i], got = a.samples.values[c][i];
+                const double was = b.samples.values[c][i];
+                if (isTemperature && !moduleAnswers(outages, t)) {
+                    EXPECT_TRUE(std::isnan(got)) << a.samples.columns[c].toStdString() << " " << t;
+                    blanked += !std::isnan(was);
+                } else if (!(std::isnan(got) && std::isnan(was))) {
+                    ASSERT_EQ(got, was) << a.samples.columns[c].toStdString() << " " << t;
+                }
+            }
+        }
+        // S3: six channels over 2800…3090 s at 10 s; SP1: its five sensors and the
+        // room over 600…895 s at 5 s (its speed and drift probes go on).
+        const std::size_t expected = a.id == QLatin1String("S3")    ? 6 * 30
+                                     : a.id == QLatin1String("SP1") ? 6 * 60
+                                                                    : 0;
+        EXPECT_EQ(blanked, expected);
+    }
 }
 
 TEST(CampaignSimulator, cancellingStopsTheSimulation) {

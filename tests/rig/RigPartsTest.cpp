@@ -1,8 +1,9 @@
-// Effects, sensors and the spindle test of the simulated rig.
+// Effects, module outages, sensors and the spindle test of the simulated rig.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
+#include "core/rig/ModuleOutage.h"
 #include "core/rig/RigEffects.h"
 #include "core/rig/SensorModel.h"
 #include "core/rig/SpindleTestSimulator.h"
@@ -45,6 +46,43 @@ TEST(RigEffects, badAssignmentsAreRefusedWithTheReason) {
     EXPECT_FALSE(applyEffect(e, QStringLiteral("forced_convection=-1"), &error));
     EXPECT_FALSE(applyEffect(e, QStringLiteral("frame_growth:T_bed=1"), &error));
     EXPECT_FALSE(e.any());
+}
+
+TEST(ModuleOutage, runAtFromToInSecondsOfRunTime) {
+    QString error;
+    const auto outage = parseModuleOutage(QStringLiteral("S3@3000-3300"), &error);
+    ASSERT_TRUE(outage) << qPrintable(error);
+    EXPECT_EQ(*outage, (ModuleOutage{QStringLiteral("S3"), 3000, 3300}));
+    const auto fractional = parseModuleOutage(QStringLiteral(" SP1@0-12.5 "), &error);
+    ASSERT_TRUE(fractional) << qPrintable(error);
+    EXPECT_EQ(*fractional, (ModuleOutage{QStringLiteral("SP1"), 0, 12.5}));
+    for (const char* bad : {"S3", "S3@3000", "S3@3000-", "@3000-3300", "S3@-10-20", "S3@a-b",
+                            "S3@3000-3300-3400", "S-3@1-2"}) {
+        EXPECT_FALSE(parseModuleOutage(QString::fromLatin1(bad), &error)) << bad;
+        EXPECT_TRUE(error.contains(QStringLiteral("'%1' is not RUN@FROM-TO").arg(bad)))
+            << qPrintable(error);
+    }
+    EXPECT_FALSE(parseModuleOutage(QStringLiteral("S3@3300-3000"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("must end after it starts (FROM 3300 s, TO 3000 s)")))
+        << qPrintable(error);
+    EXPECT_FALSE(parseModuleOutage(QStringLiteral("S3@3000-3000"), &error));
+}
+
+TEST(ModuleOutage, aRunsOutagesAreSortedAndMergedAndEndBeforeTheirTo) {
+    const std::vector<ModuleOutage> all{{QStringLiteral("S2"), 500, 600},
+                                        {QStringLiteral("S1"), 300, 400},
+                                        {QStringLiteral("S2"), 100, 200},
+                                        {QStringLiteral("S2"), 150, 250}};
+    const auto s2 = outagesOf(all, QStringLiteral("S2"));
+    ASSERT_EQ(s2.size(), 2u);
+    EXPECT_EQ(s2[0], (ModuleOutage{QStringLiteral("S2"), 100, 250}));
+    EXPECT_EQ(s2[1], (ModuleOutage{QStringLiteral("S2"), 500, 600}));
+    EXPECT_TRUE(outagesOf(all, QStringLiteral("S3")).empty());
+    EXPECT_TRUE(moduleAnswers(s2, 99.9));
+    EXPECT_FALSE(moduleAnswers(s2, 100));
+    EXPECT_FALSE(moduleAnswers(s2, 249.9));
+    EXPECT_TRUE(moduleAnswers(s2, 250));
+    EXPECT_TRUE(moduleAnswers({}, 100));
 }
 
 TEST(SensorModel, aLaggedSensorReaches63PercentOfAStepAfterOneTimeConstant) {

@@ -2,6 +2,7 @@
 // compensation; and the report as a whole.
 #include <cmath>
 
+#include "core/models/DataGaps.h"
 #include "ui/plots/DiagnosisPlots.h"
 #include "ui/report/ReportDocument.h"
 
@@ -12,6 +13,15 @@ using namespace driftlab::report;
 
 void notApplicable(ReportDocument& doc, const QString& why) {
     doc.paragraph(QStringLiteral("Not applicable: ") + why + QLatin1Char('.'));
+}
+
+/// What the section's fits made of the holes in the log: a line per hole left
+/// out, one for those bridged (as `fit` and `diagnose` print them).
+void addGaps(ReportDocument& doc, const std::vector<models::DataGap>& gaps) {
+    for (QString line : models::gapLines(gaps)) {
+        line[0] = line[0].toUpper();
+        doc.paragraph(line + QLatin1Char('.'));
+    }
 }
 
 }  // namespace
@@ -40,6 +50,7 @@ void addModels(ReportDocument& doc, const ModelSection& s) {
                                  "each run alone (rows). In brackets on the diagonal: %1; off "
                                  "it: held-out scores, the headline comparison.")
                       .arg(s.diagonal));
+    addGaps(doc, s.gaps);
     for (const ModelMatrix& m : s.models) {
         doc.subheading(QStringLiteral("Model %1").arg(m.model));
         Table table{QStringLiteral("models-") + m.model, {QStringLiteral("Fitted on")}, {}};
@@ -71,6 +82,7 @@ void addDiagnosis(ReportDocument& doc, const DiagnosisSection& s) {
             .arg(r.base_test.error_rms_um, 0, 'f', 2)
             .arg(r.base_test.error_peak_um, 0, 'f', 2)
             .arg(r.base_test.error_noise_um, 0, 'f', 2));
+    addGaps(doc, r.gaps);
     if (!r.verdict_evidence.isEmpty()) doc.paragraph(r.verdict_evidence);
     if (r.causes.size() > 1)
         doc.paragraph(
