@@ -305,7 +305,9 @@ std::optional<Finding> scoreCandidate(const StepBase& base, const CandidateEffec
             return coarse;
         }
     }
-    const auto fitted = refined(*screened, base.model->options(), data);
+    models::HeatTransferOptions refining = base.model->options();
+    refining.max_iterations = kRefineIterations;
+    const auto fitted = refined(*screened, refining, data);
     if (!fitted || data.cancelled()) return std::nullopt;
     return judged(base, candidate, *fitted, step, data);
 }

@@ -53,6 +53,10 @@ inline constexpr double kScreeningStep_s = 5;
 /// A screened candidate is refined when its held-out gain there exceeds this
 /// share of DiagnosisOptions::min_test_gain: one that cannot be named is not.
 inline constexpr double kRefineAbove = 0.5;
+/// Iterations of the refinement: from the screening's values an extension
+/// the data determine converges within a few; one that runs to a bound (a
+/// speed exponent of 3 bending the heat balance) is judged where it stands.
+inline constexpr int kRefineIterations = 15;
 
 /// `options` on the screening grid.
 models::HeatTransferOptions screeningOptions(const models::HeatTransferOptions& options);

@@ -161,7 +161,7 @@ QStringList bundlesOf(const QString& set) {
 
 /// The set's manifest lists exactly the campaigns the cases name, then the
 /// set's verdict over their outcomes.
-void expectSetVerdict(const QString& set, double floor) {
+void expectSetVerdict(const QString& set, double floor, bool calibrated = true) {
     QStringList names;
     for (const auto& [bundle, expected] : manifest(setFolder(set))) names << bundle;
     QStringList cases = bundlesOf(set);
@@ -170,7 +170,8 @@ void expectSetVerdict(const QString& set, double floor) {
     EXPECT_EQ(names, cases) << "the manifest of " << qPrintable(set)
                             << " and the test's cases differ: update independentCases()";
     test::expectSuiteVerdict(QStringLiteral("independent ") + set,
-                             test::readOutcomes(outcomesOf(set), bundlesOf(set)), floor);
+                             test::readOutcomes(outcomesOf(set), bundlesOf(set)), floor,
+                             calibrated);
 }
 
 TEST_P(IndependentCampaign, isDiagnosed) {
@@ -200,8 +201,9 @@ TEST(IndependentSuite, namesNineInTenOfTheSuiteWithReliableConfidence) {
 }
 
 TEST(IndependentSuite, namesEveryCampaignOfTheOtherDraws) {
+    // A draw holds one to six campaigns: too few for a Brier score to mean much.
     for (const char* draw : {"o61", "o71", "o81", "o91"})
-        expectSetVerdict(QString::fromLatin1(draw), 1.0);
+        expectSetVerdict(QString::fromLatin1(draw), 1.0, false);
 }
 
 TEST(IndependentSuite, namesNineInTenOfTheWidenedSuiteWithReliableConfidence) {

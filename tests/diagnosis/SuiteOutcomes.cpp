@@ -115,7 +115,7 @@ std::vector<CaseOutcome> readOutcomes(const QString& directory, const QStringLis
 }
 
 void expectSuiteVerdict(const QString& suite, const std::vector<CaseOutcome>& outcomes,
-                        double floor) {
+                        double floor, bool calibrated) {
     ConfusionMatrix confusion;
     std::vector<NamedCause> named;
     int correct = 0;
@@ -146,6 +146,7 @@ void expectSuiteVerdict(const QString& suite, const std::vector<CaseOutcome>& ou
         << qPrintable(suite) << ": " << correct << " of " << outcomes.size()
         << " named right; confusion matrix (rows: hidden, columns: verdict):" << qPrintable(matrix)
         << "\nwrong:" << qPrintable(wrong);
+    if (!calibrated) return;
     double brier = 0;
     for (const NamedCause& c : named) brier += std::pow(c.confidence - c.right(), 2);
     if (!named.empty()) brier /= double(named.size());

@@ -41,12 +41,12 @@ void writeOutcome(const QString& directory, const CaseOutcome& outcome);
 /// The outcomes of `names` from `directory`; a missing one is a test failure.
 std::vector<CaseOutcome> readOutcomes(const QString& directory, const QStringList& names);
 
-/// Over the suite: at least `floor` of the campaigns named right, the
-/// confidences' Brier score below kMaxBrier, and null data always `none`. A
-/// failure shows the confusion matrix and every wrong campaign with its
-/// evidence.
+/// Over the suite: at least `floor` of the campaigns named right, null data
+/// always `none`, and (`calibrated`) the confidences' Brier score below
+/// kMaxBrier. A failure shows the confusion matrix and every wrong campaign
+/// with its evidence.
 void expectSuiteVerdict(const QString& suite, const std::vector<CaseOutcome>& outcomes,
-                        double floor);
+                        double floor, bool calibrated = true);
 
 /// "sensor_lag:T_nut+frame_growth" → "sensor_lag+frame_growth": the kind of
 /// each cause, for the confusion matrix.

@@ -86,7 +86,8 @@ TEST(ModelsPage, fitThroughTheWidgetsShowsStoresAndMatchesTheCli) {
     ASSERT_EQ(page.scoresModel()->rowCount(), 1);
     EXPECT_EQ(page.scoresModel()->index(0, ui::TestScoresModel::Run).data().toString(),
               QStringLiteral("S3"));
-    EXPECT_EQ(page.predictions()->plot()->curveCount(), 3);  // measured, model, residual
+    // measured, model, residual, and the prediction interval above and below
+    EXPECT_EQ(page.predictions()->plot()->curveCount(), 5);
 
     // The same fit by the CLI on a copy of the store made before: the same held-out score.
     const QString copy = simulatedStore(dir, kTwoRuns, QStringLiteral("cli.db"));
@@ -105,9 +106,22 @@ TEST(ModelsPage, fitThroughTheWidgetsShowsStoresAndMatchesTheCli) {
     ASSERT_FALSE(beyond.isEmpty());
     const QString firstChannel = beyond.first().toObject()[QStringLiteral("channel")].toString();
     EXPECT_TRUE(page.notes().contains(
-        QStringLiteral("\nBeyond the training runs' temperature rises (the prediction "
+        QStringLiteral("<br>Beyond the training runs' temperature rises (the prediction "
                        "extrapolates there): S3: %1 (")
             .arg(firstChannel)))
+        << page.notes().toStdString();
+    // How sure the prediction is, as the CLI says it: the interval and its
+    // coverage of S3.
+    const QJsonObject coverage =
+        cli[QStringLiteral("test")].toObject()[QStringLiteral("coverage")].toObject();
+    const double halfWidth = cli[QStringLiteral("validation")]
+                                 .toObject()[QStringLiteral("interval")]
+                                 .toObject()[QStringLiteral("half_width_um")]
+                                 .toDouble();
+    EXPECT_TRUE(page.notes().contains(
+        QStringLiteral("Prediction interval ±%1 µm (95 %): %2 % of the held-out readings")
+            .arg(halfWidth, 0, 'f', 2)
+            .arg(100 * coverage[QStringLiteral("share")].toDouble(), 0, 'f', 0)))
         << page.notes().toStdString();
     QString error;
     auto db = db::CampaignStore::open(store, db::StoreAccess::ReadOnly, &error);

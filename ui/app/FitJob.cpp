@@ -39,8 +39,7 @@ FitOutcome runFit(const FitRequest& request, JobControl& control) {
     auto campaign =
         loadCampaignForModels(request.store_path, request.campaign_id, &out.note, &out.error);
     if (!campaign) return out;
-    auto model = models::makeModel(request.model);
-    if (!model) {
+    if (!models::makeModel(request.model)) {
         out.error = QObject::tr("'%1' is not a model (%2)")
                         .arg(request.model, models::fitModelNames().join(QStringLiteral(", ")));
         return out;
@@ -62,8 +61,11 @@ FitOutcome runFit(const FitRequest& request, JobControl& control) {
     }
     // The fit gives no fraction: "busy" until it is done.
     control.progress(-1);
-    model->setCancelCheck([&control] { return control.cancelled(); });
-    out.fit = model->fit(train.runs);
+    models::ValidatedFit validated =
+        models::fitValidated(request.model, train.runs, [&control] { return control.cancelled(); });
+    out.fit = validated.fit;
+    out.validation = validated.validation;
+    const std::unique_ptr<models::ThermalErrorModel> model = std::move(validated.model);
     if (control.cancelled()) {
         out.cancelled = true;
         return out;
@@ -79,11 +81,20 @@ FitOutcome runFit(const FitRequest& request, JobControl& control) {
         return out;
     }
     for (const models::RunData& run : test.runs) {
-        RunPrediction p{run.run_id, run.observations, {}, models::scoreModel(*model, {run})};
+        RunPrediction p{run.run_id, run.observations, {}, {}, models::scoreModel(*model, {run})};
         p.predicted_um = model->predict(run).error_um;
+        if (out.validation.interval.known())
+            for (const models::ErrorObservation& o : run.observations)
+                p.interval_um.push_back(out.validation.interval.halfWidthAt(o.position_mm));
         out.runs.push_back(std::move(p));
     }
-    if (out.held_out) out.beyond_training = models::risesBeyondTraining(train.runs, test.runs);
+    out.gaps = models::gapsOf(train.runs);
+    if (out.held_out) {
+        out.beyond_training = models::risesBeyondTraining(train.runs, test.runs);
+        out.coverage = models::coverageOf(*model, out.validation.interval, test.runs);
+        const std::vector<models::DataGap> tested = models::gapsOf(test.runs);
+        out.gaps.insert(out.gaps.end(), tested.begin(), tested.end());
+    }
     // The last moment Cancel counts: once stored, the fit is a result.
     if (control.cancelled()) {
         out.cancelled = true;

@@ -13,6 +13,7 @@
 
 #include "core/domain/Campaign.h"
 #include "core/models/ModelScore.h"
+#include "core/models/ModelValidation.h"
 #include "core/models/TrainingEnvelope.h"
 #include "ui/app/BackgroundJob.h"
 
@@ -47,6 +48,8 @@ struct RunPrediction {
     QString run_id;
     std::vector<models::ErrorObservation> observations;
     std::vector<double> predicted_um;
+    /// The half-width of the prediction interval (95 %) at each point.
+    std::vector<double> interval_um;
     models::Score score;
 };
 
@@ -60,11 +63,18 @@ struct FitOutcome {
     std::vector<RunPrediction> runs;  ///< per test run
     /// Where the test runs' temperatures leave the training runs'.
     std::vector<models::RiseBeyondTraining> beyond_training;
+    /// The fit's cross-validation against no compensation and its interval,
+    /// and the share of the held-out readings inside the interval.
+    models::Validation validation;
+    models::Coverage coverage;
+    /// The holes of the training and test runs' logs, bridged or left out.
+    std::vector<models::DataGap> gaps;
     std::optional<qint64> fit_id;  ///< the stored record
 };
 
-/// Fits, scores per test run and stores the fit (db::storeModelFit) unless
-/// cancelled. Cancel stops the fit between solver iterations.
+/// Fits and validates (models::fitValidated), scores per test run and stores
+/// the fit (db::storeModelFit) unless cancelled. Cancel stops the fit between
+/// solver iterations.
 FitOutcome runFit(const FitRequest& request, JobControl& control);
 
 struct CompareOutcome {

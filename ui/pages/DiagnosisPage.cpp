@@ -208,7 +208,14 @@ void DiagnosisPage::show(const DiagnosisOutcome& outcome) {
                                                  : QString()) +
                             (r.remaining.isEmpty() ? QString() : QStringLiteral(" ") + r.remaining)
                       : r.verdict_evidence)
-                     .toHtmlEscaped()));
+                     .toHtmlEscaped()) +
+        // The holes of the log the diagnosis bridged or left out, said as `diagnose` says them.
+        [&] {
+            QString lines;
+            for (const QString& line : models::gapLines(r.gaps))
+                lines += QStringLiteral("<br>") + line.toHtmlEscaped();
+            return lines;
+        }());
     m_findings->setFindings(r.findings, r.verdict);
     if (m_findings->verdictRow() >= 0) m_findingsView->selectRow(m_findings->verdictRow());
     {

@@ -83,6 +83,7 @@ QWidget* ModelsPage::buildFitTab() {
     m_fitSummary->setWordWrap(true);
     m_notes = new QLabel(tab);
     m_notes->setWordWrap(true);
+    m_notes->setTextFormat(Qt::RichText);
     m_parameters = new ModelParametersModel(this);
     m_scores = new TestScoresModel(this);
     auto* split = new QSplitter(Qt::Vertical, tab);
@@ -256,14 +257,31 @@ void ModelsPage::showFit(const FitOutcome& outcome, const QString& model) {
     QStringList notes = outcome.fit.notes;
     if (!outcome.note.isEmpty()) notes << outcome.note;
     QStringList shown;
-    if (!notes.isEmpty()) shown << tr("Notes: ") + notes.join(QStringLiteral("; "));
+    // What the fit may be trusted with first: harm, the interval's coverage,
+    // the holes of the log.
+    if (outcome.held_out && outcome.pooled.reduction < 0)
+        shown << tr("<b>The model makes the held-out runs' thermal error worse, not better:</b> "
+                    "RMS %1 µm with it, %2 µm without. Do not compensate with it.")
+                     .arg(outcome.pooled.rms_um, 0, 'f', 2)
+                     .arg(outcome.pooled.uncompensated_rms_um, 0, 'f', 2);
+    if (outcome.coverage.known())
+        shown << tr("Prediction interval ±%1 µm (95 %): %2 % of the held-out readings inside "
+                    "it%3.")
+                     .arg(outcome.validation.interval.half_width_um, 0, 'f', 2)
+                     .arg(100 * outcome.coverage.share, 0, 'f', 0)
+                     .arg(outcome.coverage.farBelowClaim()
+                              ? tr(", far less than it claims: the held-out runs differ from "
+                                   "the training runs more than these differ among themselves")
+                              : QString());
+    for (const QString& line : models::gapLines(outcome.gaps)) shown << line.toHtmlEscaped();
+    if (!notes.isEmpty()) shown << tr("Notes: ") + notes.join(QStringLiteral("; ")).toHtmlEscaped();
     // On a line of its own: it qualifies the held-out score above.
     const QStringList beyond = models::describeRisesBeyondTraining(outcome.beyond_training);
     if (!beyond.isEmpty())
         shown << tr("Beyond the training runs' temperature rises (the prediction extrapolates "
                     "there): %1")
-                     .arg(beyond.join(QStringLiteral("; ")));
-    m_notes->setText(shown.join(QLatin1Char('\n')));
+                     .arg(beyond.join(QStringLiteral("; ")).toHtmlEscaped());
+    m_notes->setText(shown.join(QStringLiteral("<br>")));
     m_predictions->setPredictions(model, outcome.runs);
     if (outcome.fit_id) {
         report(QStringLiteral("info"), tr("Fitted %1: held-out RMS %2 µm; stored as fit %3.")

@@ -188,14 +188,25 @@ void addCompensation(ReportDocument& doc, const CompensationSection& s) {
                                number(p.after_down_um, 3)});
     doc.table(before);
     doc.subheading(QStringLiteral("Compensation table"));
+    // Each point's expanded uncertainty (95 %, k = 2) beside its corrections,
+    // as the CSV export has it.
+    const bool uncertain = t.uncertainty_um.size() == t.size();
     Table table{QStringLiteral("compensation-table"),
                 {QStringLiteral("position_mm"), QStringLiteral("correction_plus_um"),
                  QStringLiteral("correction_minus_um")},
                 {}};
-    for (std::size_t i = 0; i < t.size(); ++i)
-        table.rows.push_back({number(t.position_mm[i], 4), number(t.correction_plus_um[i], 3),
-                              number(t.correction_minus_um[i], 3)});
+    if (uncertain) table.header << QStringLiteral("uncertainty_um");
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        std::vector<Cell> row{number(t.position_mm[i], 4), number(t.correction_plus_um[i], 3),
+                              number(t.correction_minus_um[i], 3)};
+        if (uncertain) row.push_back(number(t.uncertainty_um[i], 3));
+        table.rows.push_back(row);
+    }
     doc.table(table);
+    if (uncertain)
+        doc.paragraph(QStringLiteral(
+            "uncertainty_um: the expanded uncertainty (95 %, k = 2) of each point's correction, "
+            "from the scatter of the cycles the mean deviations are taken over (2·s/√n)."));
 }
 
 ReportDocument reportDocument(const AcceptanceReportData& data) {

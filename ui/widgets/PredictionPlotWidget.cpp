@@ -71,6 +71,8 @@ CurvePlot PredictionPlotWidget::predictionPlot(const QString& model, const RunPr
     Curve measured{tr("measured"), {}, {}, true};
     Curve predicted{tr("%1 prediction").arg(model), {}, {}, false};
     Curve residual{tr("residual (measured − model)"), {}, {}, false};
+    Curve upper{tr("prediction interval (95 %)"), {}, {}, false}, lower{QString(), {}, {}, false};
+    const bool interval = run.interval_um.size() == run.observations.size();
     std::vector<std::size_t> order(run.observations.size());
     std::iota(order.begin(), order.end(), std::size_t(0));
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -86,14 +88,20 @@ CurvePlot PredictionPlotWidget::predictionPlot(const QString& model, const RunPr
         predicted.y.push_back(run.predicted_um[j]);
         residual.x.push_back(t_h);
         residual.y.push_back(o.error_um - run.predicted_um[j]);
+        if (interval) {
+            upper.x.push_back(t_h);
+            upper.y.push_back(run.predicted_um[j] + run.interval_um[j]);
+            lower.x.push_back(t_h);
+            lower.y.push_back(run.predicted_um[j] - run.interval_um[j]);
+        }
     }
+    std::vector<Curve> curves{measured, predicted, residual};
+    if (interval) curves.insert(curves.end(), {upper, lower});
     return {tr("%1: thermal error at %2 mm, RMS %3 µm")
                 .arg(run.run_id)
                 .arg(position_mm, 0, 'f', 1)
                 .arg(run.score.rms_um, 0, 'f', 2),
-            tr("time (h)"),
-            tr("thermal error (µm)"),
-            {measured, predicted, residual}};
+            tr("time (h)"), tr("thermal error (µm)"), curves};
 }
 
 void PredictionPlotWidget::redraw() {
