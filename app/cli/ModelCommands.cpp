@@ -27,8 +27,8 @@ int fitCommand(const QStringList& args) {
     QCommandLineParser parser;
     const QCommandLineOption model{
         QStringLiteral("model"),
-        QStringLiteral("Model: %1, or auto (chooses the family and inputs by cross-validation "
-                       "over the training runs and says what it chose).")
+        QStringLiteral("Model: %1, or auto (combines the families by cross-validation over "
+                       "the training runs and says with what weights).")
             .arg(models::modelNames().join(", ")),
         QStringLiteral("NAME")};
     const QCommandLineOption train{
