@@ -27,8 +27,8 @@ int fitCommand(const QStringList& args) {
     QCommandLineParser parser;
     const QCommandLineOption model{
         QStringLiteral("model"),
-        QStringLiteral("Model: %1, or auto (chooses the family and inputs by cross-validation "
-                       "over the training runs and says what it chose).")
+        QStringLiteral("Model: %1, or auto (combines the families by cross-validation over "
+                       "the training runs and says with what weights).")
             .arg(models::modelNames().join(", ")),
         QStringLiteral("NAME")};
     const QCommandLineOption train{
@@ -103,9 +103,8 @@ int compareCommand(const QStringList& args) {
     const QString target = parser.value(kTargetOption);
     const QStringList runs = models::modelledRuns(campaign, target);
     const auto data = modelDataset(campaign, runs, target);
-    QStringList names = parser.isSet(only) ? runList(parser.value(only)) : models::modelNames();
-    // The heat-transfer model predicts the screw; it has nothing to say on a drift channel.
-    if (!target.isEmpty() && !parser.isSet(only)) names.removeAll(QStringLiteral("heat-transfer"));
+    const QStringList names =
+        parser.isSet(only) ? runList(parser.value(only)) : models::modelNamesFor(target);
 
     QJsonObject modelsJson;
     for (int k = 0; k < names.size(); ++k) {

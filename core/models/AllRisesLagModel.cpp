@@ -3,37 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "core/models/CrossValidation.h"
 #include "core/models/DynamicRegressionSearch.h"
-#include "core/models/HeatSourceInputs.h"
 #include "core/models/LeastSquares.h"
 #include "core/models/ModelError.h"
+#include "core/models/RisesHeatSearch.h"
 #include "core/models/RunDataAccess.h"
 
 namespace driftlab::models {
 namespace {
-
-/// The run with every k-th observation, about `rows` of them: 5 s samples
-/// over hours add time to the search, not information.
-RunData thinned(const RunData& run, int rows) {
-    RunData part = run;
-    const std::size_t step = std::max<std::size_t>(1, run.observations.size() / std::size_t(rows));
-    part.observations.clear();
-    for (std::size_t i = 0; i < run.observations.size(); i += step)
-        part.observations.push_back(run.observations[i]);
-    return part;
-}
-
-constexpr double kRadPerSPerKrpm = 2 * std::numbers::pi * 1000 / 60;
-
-/// The spindle's speed in 1000 rpm raised to `exponent`.
-PiecewiseInput heatInput(const RunData& run, int exponent) {
-    PiecewiseInput input = spindleSpeed(run, QStringLiteral("arx-all"));
-    for (double& v : input.value) v = std::pow(v / kRadPerSPerKrpm, exponent);
-    return input;
-}
 
 /// [rises, lags] with their position gains beside them for a positioning
 /// error (`dx` not empty); a drift channel's zeros are added per run (below).
@@ -75,7 +54,8 @@ Eigen::MatrixXd AllRisesLagModel::design(const RunData& run,
     };
     if (lagged_ >= 0)
         add(lagResponse(arx::riseInput(run, channels_[qsizetype(lagged_)]), tau_s_, times));
-    if (heatExponent_ > 0) add(lagResponse(heatInput(run, heatExponent_), heatTau_s_, times));
+    if (heatExponent_ > 0)
+        add(lagResponse(spindleHeatInput(run, heatExponent_, name()), heatTau_s_, times));
     const Eigen::VectorXd dx =
         run.positionDependent() ? positionsFromFixedEnd(run, at) : Eigen::VectorXd();
     return allRisesDesign(risesAt(run, channels_, at), lags, dx);
@@ -98,7 +78,7 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
 
     std::vector<RunData> search;
     for (const RunData& run : training)
-        search.push_back(thinned(run, options_.search_rows_per_run));
+        search.push_back(thinnedRun(run, options_.search_rows_per_run));
     const std::vector<int> folds = crossValidationFolds(search, options_.time_blocks);
     const Eigen::VectorXd y = stackRows(search, &RunData::observedErrors);
     // What every candidate shares, computed once: the rises and the positions.
@@ -198,8 +178,8 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     } else if (!positionDependent) {
         try {
             for (int exponent : {1, 2})
-                heatInputs.push_back(
-                    inputsOf([&](const RunData& run) { return heatInput(run, exponent); }));
+                heatInputs.push_back(inputsOf(
+                    [&](const RunData& run) { return spindleHeatInput(run, exponent, name()); }));
         } catch (const ModelError& e) {
             heatInputs.clear();
             heatNote = QStringLiteral("no lagged heat input: %1").arg(e.message);

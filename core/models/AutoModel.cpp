@@ -7,6 +7,7 @@
 #include "core/models/ModelError.h"
 #include "core/models/ModelFactory.h"
 #include "core/models/NoCompensationModel.h"
+#include "core/models/StackedCombination.h"
 
 namespace driftlab::models {
 namespace {
@@ -14,10 +15,19 @@ namespace {
 /// The families, simplest first: the order they are tried and reported in.
 const QStringList& familiesSimplestFirst() {
     static const QStringList families{
-        QStringLiteral("mlr"),          QStringLiteral("poly-position"),
-        QStringLiteral("exponential"),  QStringLiteral("sensorless"),
-        QStringLiteral("arx"),          QStringLiteral("arx-all"),
-        QStringLiteral("heat-transfer")};
+        QStringLiteral("mlr"),         QStringLiteral("poly-position"),
+        QStringLiteral("exponential"), QStringLiteral("sensorless"),
+        QStringLiteral("arx"),         QStringLiteral("arx-all"),
+        QStringLiteral("lsall-heat"),  QStringLiteral("ridge-heat"),
+        QStringLiteral("pcr-heat"),    QStringLiteral("heat-transfer")};
+    return families;
+}
+
+/// The families of one design, every rise and the spindle's heat with one
+/// offset, fitted three ways.
+const QStringList& shrunkenAllRises() {
+    static const QStringList families{QStringLiteral("lsall-heat"), QStringLiteral("ridge-heat"),
+                                      QStringLiteral("pcr-heat")};
     return families;
 }
 
@@ -25,115 +35,146 @@ const QStringList& familiesSimplestFirst() {
 
 QString AutoModel::describe() const {
     return QStringLiteral(
-        "Chooses the model family and its inputs by cross-validation over the training runs "
-        "only (each run left out in turn, and every run's last 30 % of time), refits the "
-        "choice on all of them and reports every family's score; no compensation is always "
-        "a candidate.");
+        "Combines the model families by cross-validation over the training runs only (each "
+        "run left out in turn, and every run's last 30 % of time): their stacked combination "
+        "(weights of at least zero summing to one, fitted to their held-out predictions) "
+        "where it is 2 % better than the mean of the near-best families, else that mean; "
+        "refits them on all the runs and reports every family's score and weight. No "
+        "compensation is always a candidate.");
 }
 
 FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
     chosen_.clear();
+    weights_.clear();
     validation_ = {};
     const std::vector<ValidationFold> folds = validationFolds(training);
     const auto cancelled = [this] { return cancelRequested(); };
+    // Each family's held-out predictions on the same readings; a family that
+    // fails on some fold takes no part.
     std::vector<HeldOutPredictions> predictions;
-    std::vector<double> scores, standardErrors;
-    QStringList scored, failed;
+    QStringList families, scored, failed;
     for (const QString& family : familiesSimplestFirst()) {
         try {
             predictions.push_back(crossValidatedPredictions(family, folds, cancelled));
-            scores.push_back(predictions.back().rms_um());
-            standardErrors.push_back(predictions.back().standard_error_um());
-            scored << QStringLiteral("%1 %2 µm").arg(family).arg(scores.back(), 0, 'g', 3);
+            families << family;
+            scored << QStringLiteral("%1 %2 µm")
+                          .arg(family)
+                          .arg(predictions.back().rms_um(), 0, 'g', 3);
         } catch (const ModelError& e) {
             if (cancelRequested()) throw;
-            predictions.emplace_back();
-            scores.push_back(std::numeric_limits<double>::infinity());
-            standardErrors.push_back(0);
             failed << QStringLiteral("%1 (%2)").arg(family, e.message);
         }
     }
-    const double best = *std::min_element(scores.begin(), scores.end());
-    if (!std::isfinite(best))
+    if (predictions.empty())
         throw ModelError(QStringLiteral("model 'auto': no model family can be fitted and "
                                         "cross-validated on these runs: %1")
                              .arg(failed.join(QStringLiteral("; "))));
-    const auto bestAt = std::size_t(std::find(scores.begin(), scores.end(), best) - scores.begin());
     // Every family predicts the same held-out readings: no compensation's
     // score is their own RMS.
-    const double none = predictions[bestAt].none_rms_um();
-    // The families within one standard error of the best score (Hastie,
-    // Tibshirani & Friedman, §7.10): a few training runs rank them by chance.
-    // Their mean varies less than any one of them.
-    const double window = best * (1 + std::max(0.02, best > 0 ? standardErrors[bestAt] / best : 0));
-    std::vector<std::size_t> members;
-    for (std::size_t k = 0; k < scores.size(); ++k)
-        if (scores[k] <= window) members.push_back(k);
-    std::stable_sort(members.begin(), members.end(),
-                     [&](std::size_t a, std::size_t b) { return scores[a] < scores[b]; });
-    // No harm: what auto predicts with must do better than no compensation
-    // on the same readings; else the best family alone; else nothing.
-    std::vector<HeldOutPredictions> chosenPredictions;
-    for (std::size_t k : members) chosenPredictions.push_back(predictions[k]);
-    if (members.size() > 1 && !(meanPredictions(chosenPredictions).rms_um() < none)) {
-        members = {bestAt};
-        chosenPredictions = {predictions[bestAt]};
-    }
-    if (!(best < none)) {
-        members.clear();
-        chosenPredictions.clear();
-    }
+    const double none = predictions.front().none_rms_um();
+    // The shrunken all-rises families are three fits of one design: in an
+    // equal-weight mean they would count three times. They take part through
+    // the stack, where a family the others already give takes no weight.
+    std::vector<bool> inMean;
+    for (const QString& family : families) inMean.push_back(!shrunkenAllRises().contains(family));
+    const CombinationChoice choice = chooseCombination(predictions, inMean);
 
     std::vector<FitSummary> fits;
-    for (std::size_t k : members) {
-        std::unique_ptr<ThermalErrorModel> model = makeModel(familiesSimplestFirst()[qsizetype(k)]);
+    for (std::size_t m = 0; m < choice.members.size(); ++m) {
+        std::unique_ptr<ThermalErrorModel> model =
+            makeModel(families[qsizetype(choice.members[m])]);
         model->setCancelCheck(cancelled);
         FitSummary fit = model->fit(training);
         if (!fit.success) throw ModelError(fit.message);
         chosen_.push_back(std::move(model));
+        weights_.push_back(choice.weights[m]);
         fits.push_back(std::move(fit));
     }
-    if (members.empty()) {
+    if (chosen_.empty()) {
         // No compensation is the best there is: its predictions are zero.
         chosen_.push_back(std::make_unique<NoCompensationModel>());
+        weights_.push_back(1.0);
         fits.push_back(chosen_.back()->fit(training));
-        HeldOutPredictions zero = predictions[bestAt];
-        std::fill(zero.predicted_um.begin(), zero.predicted_um.end(), 0.0);
-        chosenPredictions.push_back(std::move(zero));
     }
-    validation_ = validationOf(meanPredictions(chosenPredictions),
-                               training.front().positionDependent(), training.size());
+    validation_ =
+        validationOf(choice.predictions, training.front().positionDependent(), training.size());
     FitSummary summary = fits.size() == 1 ? fits.front() : combined(fits);
 
     summary.metrics[QStringLiteral("auto_cv_rms_um.none")] = none;
-    for (std::size_t k = 0; k < scores.size(); ++k)
-        if (std::isfinite(scores[k]))
-            summary.metrics[QStringLiteral("auto_cv_rms_um.") +
-                            familiesSimplestFirst()[qsizetype(k)]] = scores[k];
+    for (qsizetype f = 0; f < families.size(); ++f)
+        summary.metrics[QStringLiteral("auto_cv_rms_um.") + families[f]] =
+            predictions[std::size_t(f)].rms_um();
+    summary.metrics[QStringLiteral("auto_cv_rms_um.stacked")] = choice.stack_rms_um;
+    if (std::isfinite(choice.mean_rms_um))
+        summary.metrics[QStringLiteral("auto_cv_rms_um.mean")] = choice.mean_rms_um;
+    QStringList stackWeights;
+    for (qsizetype f = 0; f < families.size(); ++f)
+        if (choice.stack_weights[std::size_t(f)] > 0) {
+            summary.metrics[QStringLiteral("auto_stack_weight.") + families[f]] =
+                choice.stack_weights[std::size_t(f)];
+            stackWeights << QStringLiteral("%1 %2")
+                                .arg(families[f])
+                                .arg(choice.stack_weights[std::size_t(f)], 0, 'f', 2);
+        }
+    if (choice.kind != CombinationChoice::Kind::None) {
+        summary.metrics[QStringLiteral("auto_cv_rms_um.chosen")] = validation_.rms_um;
+        for (std::size_t m = 0; m < chosen_.size(); ++m)
+            summary.metrics[QStringLiteral("auto_weight.") + chosen_[m]->name()] = weights_[m];
+    }
     const QString how = describeValidationFolds(training.size());
     const QString listed =
         QStringLiteral("no compensation %1 µm, ").arg(none, 0, 'g', 3) + scored.join(", ");
+    const QString stackSaid = QStringLiteral("stacked %1: %2 µm")
+                                  .arg(stackWeights.join(QStringLiteral(", ")))
+                                  .arg(choice.stack_rms_um, 0, 'g', 3);
     QStringList notes;
-    if (members.empty())
-        notes << QStringLiteral(
-                     "auto chose no compensation: no model family does better than none by "
-                     "cross-validation over the training runs (%1): %2")
-                     .arg(how, listed);
-    else
-        notes << QStringLiteral(
-                     "auto chose %1%2 by cross-validation over the training runs "
-                     "(%3): %4")
-                     .arg(chosen(),
-                          fits.size() > 1
-                              ? QStringLiteral(" (their mean: each within one standard error "
-                                               "of the best score)")
-                              : QString(),
-                          how, listed);
+    switch (choice.kind) {
+        case CombinationChoice::Kind::None:
+            notes << QStringLiteral(
+                         "auto chose no compensation: no model family does better than none by "
+                         "cross-validation over the training runs (%1): %2; %3")
+                         .arg(how, listed, stackSaid);
+            break;
+        case CombinationChoice::Kind::BestSingle:
+            notes << QStringLiteral(
+                         "auto chose %1 by cross-validation over the training runs (%2; no "
+                         "combination did better than no compensation): %3; %4")
+                         .arg(chosen(), how, listed, stackSaid);
+            break;
+        case CombinationChoice::Kind::Mean:
+            notes << QStringLiteral(
+                         "auto chose %1%2 by cross-validation over the training runs (%3): "
+                         "%4; %5, not 2 % below the mean's %6 µm")
+                         .arg(chosen(),
+                              chosen_.size() > 1
+                                  ? QStringLiteral(" (their mean: each within one standard "
+                                                   "error of the best score)")
+                                  : QString(),
+                              how, listed, stackSaid)
+                         .arg(choice.mean_rms_um, 0, 'g', 3);
+            break;
+        case CombinationChoice::Kind::Stacked: {
+            QStringList weights;
+            for (double w : weights_) weights << QString::number(w, 'f', 2);
+            notes << QStringLiteral(
+                         "auto chose %1 (%2) by cross-validation over the training runs (%3): "
+                         "%4; the mean of the near-best %5 µm")
+                         .arg(chosen(),
+                              chosen_.size() > 1
+                                  ? QStringLiteral("stacked, weights %1: %2 µm cross-validated")
+                                        .arg(weights.join(QStringLiteral(" + ")))
+                                        .arg(choice.stack_rms_um, 0, 'g', 3)
+                                  : QStringLiteral("stacked: the others take no weight"),
+                              how, listed)
+                         .arg(choice.mean_rms_um, 0, 'g', 3);
+            break;
+        }
+    }
     if (!failed.isEmpty())
         notes << QStringLiteral("auto could not try: %1").arg(failed.join(QStringLiteral("; ")));
     summary.notes = notes + summary.notes;
     summary.message =
-        members.empty()
+        choice.kind == CombinationChoice::Kind::None
             ? QStringLiteral("model 'auto' chose no compensation on %1 run(s)").arg(training.size())
             : QStringLiteral("model 'auto' chose '%1' and fitted it on %2 run(s)")
                   .arg(chosen())
@@ -168,13 +209,13 @@ FitSummary AutoModel::combined(const std::vector<FitSummary>& fits) const {
 Eigen::VectorXd AutoModel::predictRun(const RunData& run,
                                       const std::vector<PredictionPoint>& at) const {
     Eigen::VectorXd sum = Eigen::VectorXd::Zero(Eigen::Index(at.size()));
-    for (const auto& model : chosen_) {
-        const Prediction p = model->predict(run, at);
+    for (std::size_t m = 0; m < chosen_.size(); ++m) {
+        const Prediction p = chosen_[m]->predict(run, at);
         if (!p.ok()) throw ModelError(p.error);
-        sum +=
-            Eigen::Map<const Eigen::VectorXd>(p.error_um.data(), Eigen::Index(p.error_um.size()));
+        sum += weights_[m] * Eigen::Map<const Eigen::VectorXd>(p.error_um.data(),
+                                                               Eigen::Index(p.error_um.size()));
     }
-    return sum / double(chosen_.size());
+    return sum;
 }
 
 }  // namespace driftlab::models

@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/models/AllRisesHeatModel.h"
 #include "core/models/AllRisesLagModel.h"
 #include "core/models/AutoModel.h"
 #include "core/models/DynamicRegressionModel.h"
@@ -12,6 +13,8 @@
 #include "core/models/MlrModel.h"
 #include "core/models/NoCompensationModel.h"
 #include "core/models/PolyPositionModel.h"
+#include "core/models/PrincipalRisesHeatModel.h"
+#include "core/models/RidgeHeatModel.h"
 #include "core/models/SensorlessModel.h"
 
 namespace driftlab::models {
@@ -29,6 +32,9 @@ const std::vector<std::pair<QString, Maker>>& registry() {
         {QStringLiteral("sensorless"), [] { return std::make_unique<SensorlessModel>(); }},
         {QStringLiteral("arx"), [] { return std::make_unique<DynamicRegressionModel>(); }},
         {QStringLiteral("arx-all"), [] { return std::make_unique<AllRisesLagModel>(); }},
+        {QStringLiteral("lsall-heat"), [] { return std::make_unique<AllRisesHeatModel>(); }},
+        {QStringLiteral("ridge-heat"), [] { return std::make_unique<RidgeHeatModel>(); }},
+        {QStringLiteral("pcr-heat"), [] { return std::make_unique<PrincipalRisesHeatModel>(); }},
     };
     return models;
 }
@@ -38,6 +44,17 @@ const std::vector<std::pair<QString, Maker>>& registry() {
 QStringList modelNames() {
     QStringList names;
     for (const auto& [name, make] : registry()) names << name;
+    return names;
+}
+
+QStringList modelNamesFor(const QString& target) {
+    QStringList names = modelNames();
+    if (!target.isEmpty()) {
+        names.removeAll(QStringLiteral("heat-transfer"));
+    } else {
+        for (const char* drift : {"lsall-heat", "ridge-heat", "pcr-heat"})
+            names.removeAll(QString::fromLatin1(drift));
+    }
     return names;
 }
 

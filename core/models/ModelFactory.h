@@ -12,8 +12,14 @@ namespace driftlab::models {
 /// The names makeModel knows, in the order a comparison lists them.
 QStringList modelNames();
 
+/// The families a comparison tries on a target: for a drift channel all but
+/// `heat-transfer` (it predicts the screw's positioning error); for a
+/// positioning error (`target` empty) all but the spindle-heat families
+/// (`lsall-heat`, `ridge-heat`, `pcr-heat`: they model a spindle's drift).
+QStringList modelNamesFor(const QString& target);
+
 /// The names a single fit can ask for: the families, "auto", which chooses
-/// one of them by cross-validation on the training runs (AutoModel), and
+/// among them by cross-validation on the training runs (AutoModel), and
 /// "none", no compensation (NoCompensationModel).
 QStringList fitModelNames();
 

@@ -140,16 +140,6 @@ HeldOutPredictions crossValidatedPredictions(const QString& family,
     return out;
 }
 
-HeldOutPredictions meanPredictions(const std::vector<HeldOutPredictions>& members) {
-    HeldOutPredictions mean = members.front();
-    for (std::size_t i = 0; i < mean.predicted_um.size(); ++i) {
-        double sum = 0;
-        for (const HeldOutPredictions& m : members) sum += m.predicted_um[i];
-        mean.predicted_um[i] = sum / double(members.size());
-    }
-    return mean;
-}
-
 double PredictionInterval::halfWidthAt(double x_mm) const {
     if (position_mm.empty()) return half_width_um;
     if (x_mm <= position_mm.front()) return half_width_by_position_um.front();

@@ -57,10 +57,6 @@ HeldOutPredictions crossValidatedPredictions(const QString& family,
                                              const std::vector<ValidationFold>& folds,
                                              const std::function<bool()>& cancelled = {});
 
-/// The mean of several families' predictions on the same readings (`auto`'s
-/// combination).
-HeldOutPredictions meanPredictions(const std::vector<HeldOutPredictions>& members);
-
 struct PredictionInterval {
     static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     double level = 0.95;

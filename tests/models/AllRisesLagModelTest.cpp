@@ -17,6 +17,7 @@
 #include "core/models/ModelScore.h"
 #include "tests/models/LeastSquaresBaselines.h"
 #include "tests/models/ModelTestSupport.h"
+#include "tests/models/SpindleTestCampaigns.h"
 
 namespace driftlab::models {
 namespace {
@@ -25,33 +26,6 @@ constexpr double kTrailingLag_s = 1800;
 constexpr std::array<double, 5> kGain_um_per_K{-1.0, 0.6, -0.4, 1.2, -0.8};
 constexpr double kLagGain_um_per_K = -2.0;  ///< of T1's rise through the lag
 
-/// Thermometers T1…Tn on the spindle, the spindle's speed `n_spindle` (when
-/// asked for) and a z drift probe D_z.
-Campaign spindleCampaign(int thermometers, bool speedChannel) {
-    std::vector<std::pair<QString, ChannelRole>> temperatures;
-    for (int k = 1; k <= thermometers; ++k)
-        temperatures.emplace_back(QStringLiteral("T%1").arg(k), ChannelRole::Spindle);
-    Campaign c = test::feedAxisCampaign(temperatures);
-    if (speedChannel) {
-        c.channels.push_back(
-            {QStringLiteral("n_spindle"), Quantity::Speed, ChannelRole::Spindle, {}, {}, {}});
-        c.sample_columns.push_back(QStringLiteral("n_spindle"));
-    }
-    c.channels.push_back(
-        {QStringLiteral("D_z"), Quantity::Displacement, ChannelRole::DriftZ, {}, {}, {}});
-    c.sample_columns.push_back(QStringLiteral("D_z"));
-    return c;
-}
-
-/// Spindle run SP<n>, the campaign's n-th, sampled every 15 s.
-void addSpindleRun(Campaign& c, double duration_s,
-                   const std::map<QString, test::Profile>& columns) {
-    driftlab::Run run =
-        test::sampledRun(c, QStringLiteral("SP%1").arg(c.runs.size() + 1), duration_s, 15, columns);
-    run.kind = RunKind::Spindle;
-    c.runs.push_back(run);
-}
-
 /// Four spindle runs, five thermometers T1…T5 each heating with its own
 /// time constant, amplitude and end of heating in each run; the z drift is Σ a_k·ΔT_k plus,
 /// with `lagged`, −2 µm/K times T1's rise through a lag of 1800 s (the part
@@ -59,7 +33,7 @@ void addSpindleRun(Campaign& c, double duration_s,
 /// probe reads `firstMinuteShift_um[r]` off in run r's first minute, which
 /// the drift's zero is taken from.
 Campaign fiveSensorCampaign(bool lagged, std::array<double, 4> firstMinuteShift_um = {}) {
-    Campaign c = spindleCampaign(5, false);
+    Campaign c = test::spindleCampaign(5, false);
     for (int r = 0; r < 4; ++r) {
         // Each sensor warms with its own time constant and stops warming at
         // its own time (the cooling of T1 ends the runs, so T1 rises
@@ -84,7 +58,7 @@ Campaign fiveSensorCampaign(bool lagged, std::array<double, 4> firstMinuteShift_
                          test::lagOfRise(t - 60, tau_s[0], kTrailingLag_s);
             return drift;
         };
-        addSpindleRun(c, 7200, columns);
+        test::addSpindleRun(c, 7200, columns);
     }
     return c;
 }
@@ -188,84 +162,16 @@ TEST(AllRisesLag, takesNoLagWhereTheDriftHasNone) {
     EXPECT_LT(score.rms_um, 1e-3 * score.uncompensated_rms_um);
 }
 
-/// Speed programmes, (rpm, s) blocks, and the exact first-order response of
-/// an input that is a function of the speed, from rest.
-using Programme = std::vector<std::pair<double, double>>;
-
-double responseTo(const Programme& blocks, double (*input)(double rpm), double tau_s, double t) {
-    double e = 0, start = 0;
-    for (const auto& [rpm, duration_s] : blocks) {
-        const double u = input(rpm);
-        if (t <= start + duration_s) return u + (e - u) * std::exp(-(t - start) / tau_s);
-        e = u + (e - u) * std::exp(-duration_s / tau_s);
-        start += duration_s;
-    }
-    return e;
-}
-
-double krpm(double rpm) {
-    return rpm / 1000;
-}
-double krpmSquared(double rpm) {
-    return krpm(rpm) * krpm(rpm);
-}
-
-constexpr double kRotorLag_s = 900;
-constexpr double kRotorGain_um_per_krpm2 = -0.05;
-constexpr std::array<double, 4> kBearingLag_s{240, 700, 2000, 5000};
-constexpr std::array<double, 4> kBearingRise_K_per_krpm{0.8, 0.5, 0.3, 0.2};
-
-/// Four spindle runs of different speed programmes. Four thermometers follow
-/// the bearings' friction heat, ∝ n, each through its own lag; the z drift is
-/// a static sum of their rises plus a rotor heated by its own losses, ∝ n²,
-/// through a lag of 900 s, which no thermometer sees: −0.05 µm per krpm².
-Campaign rotorCampaign() {
-    Campaign c = spindleCampaign(4, true);
-    const std::array<Programme, 4> programmes{
-        Programme{{6000, 7200}, {0, 3600}},
-        Programme{{2000, 3600}, {5000, 3600}, {8000, 3600}},
-        Programme{{8000, 3600}, {0, 1800}, {4000, 3600}, {0, 1800}},
-        Programme{{3000, 5400}, {9000, 2700}, {0, 2700}},
-    };
-    for (std::size_t r = 0; r < programmes.size(); ++r) {
-        const Programme blocks = programmes[r];
-        std::map<QString, test::Profile> columns;
-        auto bearing = [blocks](std::size_t k, double t) {
-            return kBearingRise_K_per_krpm[k] * responseTo(blocks, krpm, kBearingLag_s[k], t);
-        };
-        for (std::size_t k = 0; k < 4; ++k)
-            columns[QStringLiteral("T%1").arg(k + 1)] = [=](double t) {
-                return 22 + bearing(k, t);
-            };
-        columns[QStringLiteral("n_spindle")] = [blocks](double t) {
-            double start = 0;
-            for (const auto& [rpm, duration_s] : blocks) {
-                if (t < start + duration_s) return rpm;
-                start += duration_s;
-            }
-            return 0.0;
-        };
-        columns[QStringLiteral("D_z")] = [=](double t) {
-            double drift =
-                0.3 + kRotorGain_um_per_krpm2 * responseTo(blocks, krpmSquared, kRotorLag_s, t);
-            for (std::size_t k = 0; k < 4; ++k) drift += kGain_um_per_K[k] * bearing(k, t);
-            return drift;
-        };
-        addSpindleRun(c, 10800, columns);
-    }
-    return c;
-}
-
 TEST(AllRisesLag, givesTheHeatOfAnUnsensedRotorThroughTheLaggedSpeedSquared) {
-    const FittedOnThreeRuns f(rotorCampaign());
+    const FittedOnThreeRuns f(test::rotorCampaign());
     const FitSummary& fit = f.fit;
     ASSERT_TRUE(fit.success) << qPrintable(fit.message);
     ASSERT_TRUE(fit.notes.back().contains(QStringLiteral("the spindle's speed² through a lag")))
         << qPrintable(fit.notes.back());
     const double tau = fit.parameters.at(QStringLiteral("speed².tau")).value;
-    EXPECT_LT(std::abs(std::log(tau / kRotorLag_s)), std::log(1.5)) << tau;
-    EXPECT_NEAR(fit.parameters.at(QStringLiteral("speed².a_lag")).value, kRotorGain_um_per_krpm2,
-                0.01);
+    EXPECT_LT(std::abs(std::log(tau / test::kRotorLag_s)), std::log(1.5)) << tau;
+    EXPECT_NEAR(fit.parameters.at(QStringLiteral("speed².a_lag")).value,
+                test::kRotorGain_um_per_krpm2, 0.01);
 
     // The held-out run goes to 9000 rpm, beyond every training run: the
     // rotor's n² heat there is what the bearings' n-driven rises miss.
@@ -290,7 +196,7 @@ TEST(AllRisesLag, takesNoLaggedHeatFromOneTrainingRun) {
     // on one run).
     AllRisesLagModel model;
     const FitSummary fit =
-        model.fit(test::driftDataset(rotorCampaign(), {"SP2"}, QStringLiteral("D_z")));
+        model.fit(test::driftDataset(test::rotorCampaign(), {"SP2"}, QStringLiteral("D_z")));
     ASSERT_TRUE(fit.success) << qPrintable(fit.message);
     EXPECT_TRUE(fit.notes.contains(QStringLiteral(
         "no lagged heat input: one training run, whose time blocks share one speed programme")))

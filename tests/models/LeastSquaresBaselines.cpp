@@ -120,6 +120,7 @@ AutoAgainstBaselines autoAgainstBaselines(const std::vector<models::RunData>& tr
     EXPECT_TRUE(fit.success) << qPrintable(label) << ": " << qPrintable(fit.message);
     if (!fit.success) return result;
     result.chosen = model.chosen();
+    result.weights = model.weights();
     // Predicted once: scored, and summed by stretch for the comparison.
     const Eigen::VectorXd measured = stackRows(test, &RunData::observedErrors);
     Eigen::VectorXd predicted(measured.size());

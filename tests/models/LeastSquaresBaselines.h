@@ -48,8 +48,9 @@ HeldOut perfectModelHeldOut(const std::vector<models::RunData>& test,
 
 /// `auto` fitted on `train` and scored on `test`, beside both baselines.
 struct AutoAgainstBaselines {
-    models::Score score;  ///< `auto`'s held-out score (error set when it failed)
-    QString chosen;       ///< the family `auto` chose
+    models::Score score;          ///< `auto`'s held-out score (error set when it failed)
+    QString chosen;               ///< the families `auto` chose, joined by " + "
+    std::vector<double> weights;  ///< theirs, in the same order
     LeastSquaresBaselines baselines;
     /// The probability that `auto`'s held-out RMS is below each baseline's
     /// (the smaller of the two): the diagnosis's jackknife over stretches of

@@ -124,7 +124,8 @@ TEST(ModelFactory, makesEveryNamedModel) {
               QStringList({QStringLiteral("mlr"), QStringLiteral("poly-position"),
                            QStringLiteral("exponential"), QStringLiteral("heat-transfer"),
                            QStringLiteral("sensorless"), QStringLiteral("arx"),
-                           QStringLiteral("arx-all")}));
+                           QStringLiteral("arx-all"), QStringLiteral("lsall-heat"),
+                           QStringLiteral("ridge-heat"), QStringLiteral("pcr-heat")}));
     // A single fit may also ask for "auto" and "none" (no compensation), which
     // are no families of their own and so stay out of the comparisons.
     EXPECT_EQ(fitModelNames(), modelNames() << QStringLiteral("auto") << QStringLiteral("none"));

@@ -126,9 +126,7 @@ CompareOutcome runCompare(const QString& storePath, qint64 campaignId, const QSt
         out.error = data.error;
         return out;
     }
-    QStringList names = models::modelNames();
-    // The heat-transfer model predicts the screw; it has nothing to say on a drift channel.
-    if (!target.isEmpty()) names.removeAll(QStringLiteral("heat-transfer"));
+    const QStringList names = models::modelNamesFor(target);
     for (int k = 0; k < names.size(); ++k) {
         models::CrossStateMatrix matrix = models::crossStateMatrix(
             names[k], data.runs,
