@@ -40,7 +40,7 @@ for r in rows:
                                                       r[c['direction']])]) + random.gauss(0, 1))
 csv.writer(open(path, 'w', newline='')).writerows([head] + rows)
 )";
-        runTool(QStringLiteral("python3"),
+        runTool(QStringLiteral(DRIFTLAB_PYTHON),
                 {QStringLiteral("-c"), QString::fromUtf8(script), bundle});
         return bundle;
     }();

@@ -43,7 +43,8 @@ Campaign importedAndExported(const QString& bundle, const QDir& work, QByteArray
 /// the import must warn `warning`.
 void expectRewrittenImportsAsThePlainBundle(const QString& bundle, const char* script,
                                             const char* warning) {
-    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromUtf8(script), bundle});
+    runTool(QStringLiteral(DRIFTLAB_PYTHON),
+            {QStringLiteral("-c"), QString::fromUtf8(script), bundle});
     QByteArray err;
     EXPECT_EQ(importedAndExported(bundle, QFileInfo(bundle).dir(), &err), exampleCampaign());
     if (warning)

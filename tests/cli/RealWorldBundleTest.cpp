@@ -32,7 +32,8 @@ for path in glob.glob(sys.argv[1] + '/*.csv'):
     with open(path, 'w', newline='', encoding='utf-8-sig') as f:
         csv.writer(f, quoting=csv.QUOTE_ALL, lineterminator='\r\n').writerows(rows)
 )";
-    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromLatin1(script), bundle});
+    runTool(QStringLiteral(DRIFTLAB_PYTHON),
+            {QStringLiteral("-c"), QString::fromLatin1(script), bundle});
 }
 
 }  // namespace
@@ -174,8 +175,8 @@ rows = list(csv.reader(open(path, newline='')))
 rows = rows[:1] + [r for r in rows[1:] if r[0] != 'S1' or float(r[1]) >= 900]
 csv.writer(open(path, 'w', newline='')).writerows(rows)
 )";
-    runTool(QStringLiteral("python3"), {QStringLiteral("-c"), QString::fromUtf8(lateLogger),
-                                        dir.filePath(QStringLiteral("late"))});
+    runTool(QStringLiteral(DRIFTLAB_PYTHON), {QStringLiteral("-c"), QString::fromUtf8(lateLogger),
+                                              dir.filePath(QStringLiteral("late"))});
     const BundleReadResult late = readBundle(dir.filePath(QStringLiteral("late")));
     ASSERT_TRUE(late.ok());
     EXPECT_EQ(late.campaign->findRun(QStringLiteral("S1"))->samples.time_s.front(), 900);
@@ -223,7 +224,7 @@ path = sys.argv[1] + '/positioning.csv'
 rows = list(csv.reader(open(path, newline='')))
 csv.writer(open(path, 'w', newline='')).writerows(rows[:1] + [r for r in rows[1:] if r[2] != '0'])
 )";
-    runTool(QStringLiteral("python3"),
+    runTool(QStringLiteral(DRIFTLAB_PYTHON),
             {QStringLiteral("-c"), QString::fromUtf8(dropColdPass), lost});
     const BundleReadResult warm = readBundle(lost);
     ASSERT_TRUE(warm.ok());

@@ -232,7 +232,7 @@ csv.writer(open(dst + '/samples.csv', 'w', newline=''), lineterminator='\n').wri
          {std::pair{"forced_convection_m07", "forced_convection"}, {"null_a", "none"}}) {
         const QString thinned = work.filePath(QString::fromLatin1(bundle));
         QProcess python;
-        python.start(QStringLiteral("python3"),
+        python.start(QStringLiteral(DRIFTLAB_PYTHON),
                      {QStringLiteral("-c"), QString::fromLatin1(thin),
                       suite.filePath(QString::fromLatin1(bundle)), thinned});
         ASSERT_TRUE(python.waitForFinished(60'000));
