@@ -297,7 +297,6 @@ std::vector<std::vector<double>> noiseFreeDrift(const std::vector<RunData>& twin
 TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleRuns) {
     // Six spindle campaigns of the rig (seeds 1–6), three runs to train and
     // three to score, five probes each: 30 chances for the baselines.
-    test::printAutoAgainstBaselinesHeader();
     test::AutoAgainstBaselinesTally tally;
     int withRoom = 0;
     for (unsigned seed = 1; seed <= 6; ++seed) {
@@ -319,6 +318,7 @@ TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleR
                 test::perfectModelHeldOut(
                     test, noiseFreeDrift(test::driftDataset(noiseFree, testRuns, probe))));
             ASSERT_TRUE(a.score.ok());
+            SCOPED_TRACE(qPrintable(a.text()));
             const double baseline = a.baselines.better_um();
             tally.add(a);
             // Wherever the baselines leave room (more than a fifth of the
@@ -350,9 +350,8 @@ TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleR
             }
         }
     }
-    std::printf("the baselines leave room on %d; auto beats both there\n", withRoom);
     EXPECT_GE(withRoom, 20);  // x, y, z and the tilt about x of every seed, roughly
-    tally.print();
+    SCOPED_TRACE(qPrintable(tally.text()));
     // On the tilt about y too, or ties within 0.001 µm, but for two campaigns
     // of six (see docs/models.md): seed 3, where a perfect model is not beyond
     // chance either, and seed 6, where `auto` took `exponential` alone, by

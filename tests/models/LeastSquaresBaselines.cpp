@@ -121,6 +121,7 @@ AutoAgainstBaselines autoAgainstBaselines(const std::vector<models::RunData>& tr
     if (!fit.success) return result;
     result.chosen = model.chosen();
     result.weights = model.weights();
+    result.coverage = models::coverageOf(model, model.validation().interval, test);
     // Predicted once: scored, and summed by stretch for the comparison.
     const Eigen::VectorXd measured = stackRows(test, &RunData::observedErrors);
     Eigen::VectorXd predicted(measured.size());
@@ -137,22 +138,24 @@ AutoAgainstBaselines autoAgainstBaselines(const std::vector<models::RunData>& tr
     result.probability_better =
         std::min(diagnosis::probabilityLarger(autoStretches, &b.all_rises.stretches),
                  diagnosis::probabilityLarger(autoStretches, &b.best_pair.stretches));
-    std::printf("%-14s %6.3f µm (%-12s) %6.3f µm  %6.3f µm (%s)  %5.3f", qPrintable(label),
-                result.score.rms_um, qPrintable(result.chosen), b.all_rises.rms_um,
-                b.best_pair.rms_um, qPrintable(b.best_pair_sensors), result.probability_better);
     result.probability_perfect_better =
         std::min(diagnosis::probabilityLarger(perfect.stretches, &b.all_rises.stretches),
                  diagnosis::probabilityLarger(perfect.stretches, &b.best_pair.stretches));
-    std::printf("  %6.3f µm  %5.3f", perfect.rms_um, result.probability_perfect_better);
     result.perfect = std::move(perfect);
-    std::printf("\n");
     return result;
 }
 
-void printAutoAgainstBaselinesHeader() {
-    std::printf(
-        "held out       auto (chosen)          all rises  best pair (on training)  "
-        "P(auto better than both)  perfect model  P(it beats both)\n");
+QString AutoAgainstBaselines::text() const {
+    return QStringLiteral(
+               "auto %1 µm (%2), every rise %3 µm, best pair %4 µm (%5), a perfect model %6 µm; "
+               "P(auto better than both) %7")
+        .arg(score.rms_um, 0, 'f', 3)
+        .arg(chosen)
+        .arg(baselines.all_rises.rms_um, 0, 'f', 3)
+        .arg(baselines.best_pair.rms_um, 0, 'f', 3)
+        .arg(baselines.best_pair_sensors)
+        .arg(perfect.rms_um, 0, 'f', 3)
+        .arg(probability_better, 0, 'f', 3);
 }
 
 void AutoAgainstBaselinesTally::add(const AutoAgainstBaselines& a) {
@@ -166,15 +169,19 @@ void AutoAgainstBaselinesTally::add(const AutoAgainstBaselines& a) {
     tied_where_perfect_beats += a.perfectSurelyBeatsBoth() && a.tiesTheBetter();
 }
 
-void AutoAgainstBaselinesTally::print() const {
-    std::printf(
-        "auto beats both baselines on %d of %d (and ties the better within 0.001 µm on %d); "
-        "surely (P > 0.95) on %d; a baseline surely better on %d\n",
-        beaten, cases, tied, surely_better, surely_worse);
-    std::printf(
-        "a perfect model beats both baselines beyond chance on %d; auto beats both on %d of "
-        "those (and ties on %d)\n",
-        perfect_beats, beaten_where_perfect_beats, tied_where_perfect_beats);
+QString AutoAgainstBaselinesTally::text() const {
+    return QStringLiteral(
+               "auto beats both baselines on %1 of %2 (and ties the better within 0.001 µm on "
+               "%3); surely (P > 0.95) on %4; a baseline surely better on %5; a perfect model "
+               "beats both beyond chance on %6, auto beats both on %7 of those (and ties on %8)")
+        .arg(beaten)
+        .arg(cases)
+        .arg(tied)
+        .arg(surely_better)
+        .arg(surely_worse)
+        .arg(perfect_beats)
+        .arg(beaten_where_perfect_beats)
+        .arg(tied_where_perfect_beats);
 }
 
 }  // namespace driftlab::test

@@ -9,6 +9,7 @@
 
 #include "core/diagnosis/StretchJackknife.h"
 #include "core/models/ModelScore.h"
+#include "core/models/ModelValidation.h"
 #include "core/models/ThermalErrorData.h"
 
 namespace driftlab::test {
@@ -67,15 +68,17 @@ struct AutoAgainstBaselines {
         return !beatsBoth() && score.rms_um < baselines.better_um() + 0.001;
     }
     bool perfectSurelyBeatsBoth() const { return probability_perfect_better > 0.95; }
+    /// The share of the held-out readings inside `auto`'s prediction interval.
+    models::Coverage coverage;
+    /// The figures, for a failure message.
+    QString text() const;
 };
 
-/// The comparison, printed as one row labelled `label` of the table that
-/// printAutoAgainstBaselinesHeader() heads, with the `perfect` model beside
-/// it; a failed fit is a test failure.
+/// The comparison, with the `perfect` model beside it; a failed fit is a
+/// test failure naming `label`.
 AutoAgainstBaselines autoAgainstBaselines(const std::vector<models::RunData>& train,
                                           const std::vector<models::RunData>& test,
                                           const QString& label, HeldOut perfect);
-void printAutoAgainstBaselinesHeader();
 
 /// How often `auto` beats both baselines, and how often the held-out
 /// difference is beyond chance (P > 0.95 either way).
@@ -87,7 +90,8 @@ struct AutoAgainstBaselinesTally {
     /// Ties (tiesTheBetter), overall and where a perfect model beats both.
     int tied = 0, tied_where_perfect_beats = 0;
     void add(const AutoAgainstBaselines& a);
-    void print() const;
+    /// The counts, for a failure message.
+    QString text() const;
 };
 
 }  // namespace driftlab::test

@@ -12,6 +12,7 @@
 #include "core/models/ModelValidation.h"
 #include "core/rig/CampaignSimulator.h"
 #include "tests/models/ModelTestSupport.h"
+#include "tests/models/ValidationRecord.h"
 
 namespace driftlab::models {
 namespace {
@@ -127,6 +128,15 @@ TEST(ModelValidation, theIntervalCoversWhatItClaimsOnTheRigsHeldOutRuns) {
         ASSERT_TRUE(c.known()) << qPrintable(name);
         EXPECT_NEAR(c.share, 0.95, 0.10) << qPrintable(name);
         EXPECT_FALSE(c.farBelowClaim()) << qPrintable(name);
+        test::writeValidationRecord(
+            QStringLiteral("coverage"), QStringLiteral("rig-") + name,
+            {{QStringLiteral("campaign"), QStringLiteral("simulated rig, five moving states")},
+             {QStringLiteral("model"), name},
+             {QStringLiteral("train"), QStringLiteral("S1,S2,S3")},
+             {QStringLiteral("test"), QStringLiteral("S4,S5")},
+             {QStringLiteral("interval_um"), fit.validation.interval.half_width_um},
+             {QStringLiteral("readings"), qint64(c.readings)},
+             {QStringLiteral("coverage"), c.share}});
     }
 }
 
