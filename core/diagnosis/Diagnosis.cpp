@@ -6,6 +6,7 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <numeric>
 #include <optional>
 #include <thread>
 
@@ -48,10 +49,23 @@ std::vector<Finding> testCandidates(
     withSimulation.screening = screening ? &*screening : nullptr;
     std::vector<std::optional<Finding>> scored(candidates.size());
     std::vector<std::exception_ptr> failed(candidates.size());
+    // The longest fits first, so that the two workers end together: the
+    // effects on the heat flow (new simulations), those with the most free
+    // parameters first; the effects on the readings, a few hundredths of a
+    // second each, fill in at the end.
+    std::vector<std::size_t> order(candidates.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    const auto cost = [&](std::size_t k) {
+        const CandidateEffect& c = candidates[k].first;
+        return c.output_only ? 0 : 1 + c.parameters.size();
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return cost(a) > cost(b); });
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
-        for (std::size_t k; (k = next++) < candidates.size();) {
-            *done = from + (to - from) * double(k) / double(candidates.size());
+        for (std::size_t i; (i = next++) < candidates.size();) {
+            const std::size_t k = order[i];
+            *done = from + (to - from) * double(i) / double(candidates.size());
             if (data.cancelled()) return;
             try {
                 scored[k] = scoreCandidate(base, candidates[k].first, candidates[k].second, step,
