@@ -6,6 +6,7 @@
 #include <QTimer>
 
 #include "ui/app/MainWindow.h"
+#include "ui/pages/ModelsPage.h"
 
 namespace driftlab::gui {
 namespace {
@@ -16,6 +17,30 @@ QString fileStem(const QString& tabText) {
     stem.remove(QLatin1Char(' '));
     stem.remove(QLatin1Char('&'));
     return stem == QLatin1String("set-up") ? QStringLiteral("setup") : stem;
+}
+
+bool save(ui::MainWindow* window, const QString& path) {
+    if (window->grab().save(path)) return true;
+    qWarning("driftlab: cannot write %s", qPrintable(path));
+    QApplication::exit(1);
+    return false;
+}
+
+void showPage(ui::MainWindow* window, QString dir, int page);
+
+/// The Models page's predictions too: measured against predicted, with the
+/// prediction interval's band, as gui-models-predictions.png.
+void showPredictions(ui::MainWindow* window, QString dir, int page) {
+    QTabWidget* results = window->modelsPage()->resultTabs();
+    const int shown = results->currentIndex();
+    for (int i = 0; i < results->count(); ++i)
+        if (results->tabText(i).remove(QLatin1Char('&')) == QLatin1String("Predictions"))
+            results->setCurrentIndex(i);
+    QTimer::singleShot(400, window, [window, dir, page, results, shown] {
+        if (!save(window, QDir(dir).filePath(QStringLiteral("gui-models-predictions.png")))) return;
+        results->setCurrentIndex(shown);
+        showPage(window, dir, page + 1);
+    });
 }
 
 void showPage(ui::MainWindow* window, QString dir, int page) {
@@ -29,12 +54,11 @@ void showPage(ui::MainWindow* window, QString dir, int page) {
     QTimer::singleShot(400, window, [window, dir, page] {
         const QString path = QDir(dir).filePath(
             QStringLiteral("gui-%1.png").arg(fileStem(window->pages()->tabText(page))));
-        if (!window->grab().save(path)) {
-            qWarning("driftlab: cannot write %s", qPrintable(path));
-            QApplication::exit(1);
-            return;
-        }
-        showPage(window, dir, page + 1);
+        if (!save(window, path)) return;
+        if (window->pages()->widget(page) == window->modelsPage())
+            showPredictions(window, dir, page);
+        else
+            showPage(window, dir, page + 1);
     });
 }
 

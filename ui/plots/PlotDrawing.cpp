@@ -73,6 +73,17 @@ void drawCurves(QCustomPlot& p, const CurvePlot& plot) {
             g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, colour, 5));
         }
     }
+    for (int i = 0; i < n; ++i) {
+        const int upper = plot.curves[std::size_t(i)].bandOf;
+        if (upper < 0 || upper >= n || upper == i) continue;
+        QCPGraph* edge = p.graph(upper);
+        QColor shade = edge->pen().color();
+        shade.setAlpha(40);
+        edge->setBrush(shade);
+        edge->setChannelFillGraph(p.graph(i));
+        p.graph(i)->setPen(edge->pen());
+        p.graph(i)->removeFromLegend();
+    }
     p.legend->setVisible(n > 1 && n <= 16);
     p.legend->setFont(QFont(QStringLiteral("sans"), 8));
     // Thermal errors grow with position and time: the top left is the free corner.

@@ -18,6 +18,9 @@ struct Curve {
     QString name;
     std::vector<double> x, y;
     bool markersOnly = false;  ///< measured points; otherwise a line
+    /// The lower edge of a band whose upper edge is curve `bandOf`: drawn in
+    /// its colour, the band between them shaded, no legend entry of its own.
+    int bandOf = -1;
 };
 
 struct CurvePlot {

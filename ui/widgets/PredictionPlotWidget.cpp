@@ -71,7 +71,8 @@ CurvePlot PredictionPlotWidget::predictionPlot(const QString& model, const RunPr
     Curve measured{tr("measured"), {}, {}, true};
     Curve predicted{tr("%1 prediction").arg(model), {}, {}, false};
     Curve residual{tr("residual (measured − model)"), {}, {}, false};
-    Curve upper{tr("prediction interval (95 %)"), {}, {}, false}, lower{QString(), {}, {}, false};
+    Curve upper{tr("prediction interval (95 %)"), {}, {}, false, -1};
+    Curve lower{QString(), {}, {}, false, 3};  // closes the band of `upper`, curve 3
     const bool interval = run.interval_um.size() == run.observations.size();
     std::vector<std::size_t> order(run.observations.size());
     std::iota(order.begin(), order.end(), std::size_t(0));
