@@ -4,6 +4,23 @@
 
 namespace driftlab::db {
 
+namespace {
+
+/// The interval on runs beyond the training runs' rises; {} when unknown.
+QJsonObject beyondJson(const models::PredictionInterval& interval) {
+    if (!interval.knownBeyond()) return {};
+    QJsonArray byPosition;
+    for (std::size_t i = 0; i < interval.beyond_by_position_um.size(); ++i)
+        byPosition.append(QJsonObject{
+            {QStringLiteral("position_mm"), interval.position_mm[i]},
+            {QStringLiteral("half_width_um"), jsonNumber(interval.beyond_by_position_um[i])}});
+    return {{QStringLiteral("half_width_um"), jsonNumber(interval.beyond_half_width_um)},
+            {QStringLiteral("by_position"), byPosition},
+            {QStringLiteral("readings"), qint64(interval.beyond_readings)}};
+}
+
+}  // namespace
+
 QJsonObject validationJson(const models::Validation& v) {
     if (!v.known()) return {};
     const models::PredictionInterval& interval = v.interval;
@@ -21,6 +38,7 @@ QJsonObject validationJson(const models::Validation& v) {
              QJsonObject{{QStringLiteral("level"), interval.level},
                          {QStringLiteral("half_width_um"), jsonNumber(interval.half_width_um)},
                          {QStringLiteral("by_position"), byPosition},
+                         {QStringLiteral("beyond_training"), beyondJson(interval)},
                          {QStringLiteral("method"), interval.method}}}};
 }
 

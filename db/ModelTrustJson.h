@@ -15,7 +15,8 @@ namespace driftlab::db {
 
 /// {"cv_rms_um", "none_cv_rms_um", "worse_than_none", "readings", "folds",
 ///  "interval": {"level", "half_width_um", "by_position": [{"position_mm",
-///  "half_width_um"}], "method"}}; {} when unknown.
+///  "half_width_um"}], "beyond_training": {"half_width_um", "by_position",
+///  "readings"} ({} when unknown), "method"}}; {} when unknown.
 QJsonObject validationJson(const models::Validation& validation);
 
 /// {"share", "claimed", "readings", "far_below_claim"}; {} when unknown.

@@ -39,6 +39,13 @@ QJsonObject HeldOutFit::json() const {
                                   {QStringLiteral("rise_K"), b.rise_K},
                                   {QStringLiteral("training_low_K"), b.training_low_K},
                                   {QStringLiteral("training_high_K"), b.training_high_K}});
+    QJsonArray speeds;
+    for (const models::SpeedBeyondTraining& b : speedsBeyond)
+        speeds.append(QJsonObject{{QStringLiteral("run"), b.run},
+                                  {QStringLiteral("channel"), b.channel},
+                                  {QStringLiteral("speed_rpm"), b.speed_rpm},
+                                  {QStringLiteral("training_low_rpm"), b.training_low_rpm},
+                                  {QStringLiteral("training_high_rpm"), b.training_high_rpm}});
     QJsonObject tested = heldOut() ? db::scoreJson(score) : QJsonObject();
     if (heldOut()) {
         tested[QStringLiteral("coverage")] = db::coverageJson(coverage);
@@ -56,6 +63,7 @@ QJsonObject HeldOutFit::json() const {
             {QStringLiteral("validation"), db::validationJson(validation)},
             {QStringLiteral("gaps"), db::gapsJson(gaps)},
             {QStringLiteral("beyond_training"), beyond},
+            {QStringLiteral("beyond_training_speed"), speeds},
             {QStringLiteral("fit"),
              QJsonObject{{QStringLiteral("message"), fit.message},
                          {QStringLiteral("rms_um"), jsonNumber(fit.rms_um)},
@@ -103,7 +111,8 @@ HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
     if (!r.score.ok()) throw CliError(r.score.error);
     if (r.heldOut()) {
         r.beyondTraining = models::risesBeyondTraining(training, scored);
-        r.coverage = models::coverageOf(*r.model, r.validation.interval, scored);
+        r.speedsBeyond = models::speedsBeyondTraining(training, scored);
+        r.coverage = models::coverageOf(*r.model, r.validation.interval, scored, training);
     }
     r.gaps = models::gapsOf(training);
     if (r.heldOut()) {
@@ -126,9 +135,10 @@ QStringList HeldOutFit::trustLines() const {
                      .arg(100 * score.reduction, 0, 'f', 0);
     if (validation.interval.known() && coverage.known())
         lines << QStringLiteral(
-                     "prediction interval ±%1 µm (95 %): %2 % of the held-out readings "
-                     "inside it%3")
+                     "prediction interval ±%1 µm (95 %)%2: %3 % of the held-out readings "
+                     "inside it%4")
                      .arg(validation.interval.half_width_um, 0, 'f', 2)
+                     .arg(models::extrapolationWords(validation.interval, extrapolates()))
                      .arg(100 * coverage.share, 0, 'f', 0)
                      .arg(coverage.farBelowClaim()
                               ? QStringLiteral(", far less than it claims: the held-out runs "

@@ -39,6 +39,9 @@ struct HeldOutFit {
     /// Where the held-out runs' temperatures leave the training runs' (the
     /// score there is an extrapolation's); empty without a held-out run.
     std::vector<models::RiseBeyondTraining> beyondTraining;
+    std::vector<models::SpeedBeyondTraining> speedsBeyond;
+    /// A held-out run goes beyond the training runs: its prediction extrapolates.
+    bool extrapolates() const { return !beyondTraining.empty() || !speedsBeyond.empty(); }
     db::ModelFitRecord record;  ///< as the store keeps it
 
     bool heldOut() const { return !testRuns.isEmpty(); }

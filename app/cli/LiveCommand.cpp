@@ -154,7 +154,9 @@ int liveCommand(const QStringList& args) {
 
     const models::PredictionInterval& band = fitted.validation.interval;
     const double uncertainty_um =
-        band.known() ? band.halfWidthAt(options.settings.offset_position_mm) : NAN;
+        band.known() ? band.halfWidthAt(options.settings.offset_position_mm,
+                                        models::beyondTraining(data.runs, replayed))
+                     : NAN;
     const auto windows = cuttingWindows(parser.value(cutting));
     if (parser.isSet(push) && parser.isSet(cutting))
         throw CliError(QStringLiteral("--cutting goes without --push: the controller says when it "

@@ -87,6 +87,13 @@ int fitCommand(const QStringList& args) {
                            "extrapolates there):"));
         for (const QString& line : beyond) printLine(QStringLiteral("  ") + line);
     }
+    const QStringList faster = models::describeSpeedsBeyondTraining(r.speedsBeyond);
+    if (!faster.isEmpty()) {
+        printLine(
+            QStringLiteral("beyond the training runs' spindle speeds (the prediction "
+                           "extrapolates there):"));
+        for (const QString& line : faster) printLine(QStringLiteral("  ") + line);
+    }
     return 0;
 }
 

@@ -123,8 +123,10 @@ ThermalProfile thermalProfile(const QCommandLineParser& parser, const Campaign& 
 
     ThermalProfile profile;
     profile.validation = validated.validation;
-    profile.uncertainty_um = [interval = validated.validation.interval](double x) {
-        return interval.known() ? interval.halfWidthAt(x) : 0.0;
+    // The state's run beyond the training runs' rises is an extrapolation.
+    profile.uncertainty_um = [interval = validated.validation.interval,
+                              beyond = models::beyondTraining(data.runs, state)](double x) {
+        return interval.known() ? interval.halfWidthAt(x, beyond) : 0.0;
     };
     profile.from_mm = from_mm;
     profile.to_mm = to_mm;

@@ -7,6 +7,7 @@
 #include "core/models/AutoModel.h"
 #include "core/models/ModelError.h"
 #include "core/models/ModelFactory.h"
+#include "core/models/TrainingEnvelope.h"
 
 namespace driftlab::models {
 namespace {
@@ -41,8 +42,56 @@ double conformalQuantile(std::vector<double> magnitudes, double level) {
 /// A positioning error's interval per target: at least this many held-out
 /// readings at a target, or the pooled interval alone.
 constexpr std::size_t kReadingsPerTarget = 20;
+/// The interval beyond the training runs: at least this many readings of the
+/// folds' extrapolations, or none.
+constexpr std::size_t kReadingsBeyond = 20;
+
+/// The conformal quantile of `magnitudes` overall and, where `byTarget` has
+/// at least kReadingsPerTarget at every one of several targets, per target.
+void quantiles(const std::vector<double>& magnitudes,
+               const std::map<double, std::vector<double>>& byTarget, double level, double* overall,
+               std::vector<double>* positions, std::vector<double>* perTarget) {
+    *overall = conformalQuantile(magnitudes, level);
+    bool each = byTarget.size() > 1;
+    for (const auto& [x, m] : byTarget) each = each && m.size() >= kReadingsPerTarget;
+    if (!each) return;
+    for (const auto& [x, m] : byTarget) {
+        if (positions) positions->push_back(x);
+        perTarget->push_back(conformalQuantile(m, level));
+    }
+}
+
+/// Linear between the targets, held beyond them.
+double interpolated(const std::vector<double>& position_mm, const std::vector<double>& value,
+                    double x_mm) {
+    if (x_mm <= position_mm.front()) return value.front();
+    if (x_mm >= position_mm.back()) return value.back();
+    const auto hi = std::size_t(std::upper_bound(position_mm.begin(), position_mm.end(), x_mm) -
+                                position_mm.begin());
+    const double f = (x_mm - position_mm[hi - 1]) / (position_mm[hi] - position_mm[hi - 1]);
+    return value[hi - 1] + f * (value[hi] - value[hi - 1]);
+}
 
 }  // namespace
+
+void nestBeyondInterval(const std::vector<RunData>& training, PredictionInterval* interval,
+                        const std::function<bool()>& cancelled) {
+    std::vector<ValidationFold> extrapolating;
+    for (ValidationFold& fold : validationFolds(training))
+        if (std::find(fold.held_out_beyond.begin(), fold.held_out_beyond.end(), true) !=
+            fold.held_out_beyond.end())
+            extrapolating.push_back(std::move(fold));
+    if (extrapolating.empty()) return;
+    const PredictionInterval nested =
+        validationOf(crossValidatedPredictions(QStringLiteral("auto"), extrapolating, cancelled),
+                     training.front().positionDependent(), training.size())
+            .interval;
+    interval->beyond_half_width_um = nested.beyond_half_width_um;
+    interval->beyond_by_position_um = nested.position_mm == interval->position_mm
+                                          ? nested.beyond_by_position_um
+                                          : std::vector<double>{};
+    interval->beyond_readings = nested.beyond_readings;
+}
 
 std::vector<ValidationFold> validationFolds(const std::vector<RunData>& training) {
     // Folds of two kinds. Each run held out in turn scores motion the fit has
@@ -69,6 +118,9 @@ std::vector<ValidationFold> validationFolds(const std::vector<RunData>& training
         if (!late.observations.empty()) inTime.held_out.push_back(std::move(late));
     }
     if (!inTime.held_out.empty()) folds.push_back(std::move(inTime));
+    for (ValidationFold& fold : folds)
+        for (const RunData& part : fold.held_out)
+            fold.held_out_beyond.push_back(beyondTraining(fold.fit_on, part));
     return folds;
 }
 
@@ -125,9 +177,12 @@ HeldOutPredictions crossValidatedPredictions(const QString& family,
         if (cancelled) model->setCancelCheck(cancelled);
         const FitSummary fit = model->fit(fold.fit_on);
         if (!fit.success) throw ModelError(fit.message);
-        for (const RunData& heldOut : fold.held_out) {
+        for (std::size_t part = 0; part < fold.held_out.size(); ++part) {
+            const RunData& heldOut = fold.held_out[part];
             const Prediction p = model->predict(heldOut);
             if (!p.ok()) throw ModelError(p.error);
+            out.part_beyond.push_back(part < fold.held_out_beyond.size() &&
+                                      fold.held_out_beyond[part]);
             for (std::size_t i = 0; i < heldOut.observations.size(); ++i) {
                 out.measured_um.push_back(heldOut.observations[i].error_um);
                 out.predicted_um.push_back(p.error_um[i]);
@@ -140,15 +195,26 @@ HeldOutPredictions crossValidatedPredictions(const QString& family,
     return out;
 }
 
-double PredictionInterval::halfWidthAt(double x_mm) const {
-    if (position_mm.empty()) return half_width_um;
-    if (x_mm <= position_mm.front()) return half_width_by_position_um.front();
-    if (x_mm >= position_mm.back()) return half_width_by_position_um.back();
-    const auto hi = std::size_t(std::upper_bound(position_mm.begin(), position_mm.end(), x_mm) -
-                                position_mm.begin());
-    const double f = (x_mm - position_mm[hi - 1]) / (position_mm[hi] - position_mm[hi - 1]);
-    return half_width_by_position_um[hi - 1] +
-           f * (half_width_by_position_um[hi] - half_width_by_position_um[hi - 1]);
+double PredictionInterval::halfWidthAt(double x_mm, bool beyond) const {
+    const double within = position_mm.empty()
+                              ? half_width_um
+                              : interpolated(position_mm, half_width_by_position_um, x_mm);
+    if (!beyond || !knownBeyond()) return within;
+    const double outside = beyond_by_position_um.empty()
+                               ? beyond_half_width_um
+                               : interpolated(position_mm, beyond_by_position_um, x_mm);
+    return std::max(within, outside);
+}
+
+QString extrapolationWords(const PredictionInterval& interval, bool beyond) {
+    if (!beyond || !interval.knownBeyond()) return {};
+    return QStringLiteral(", ±%1 µm on the held-out runs beyond the training runs")
+        .arg(std::max(interval.half_width_um, interval.beyond_half_width_um), 0, 'f', 2);
+}
+
+bool beyondTraining(const std::vector<RunData>& training, const RunData& run) {
+    return !risesBeyondTraining(training, {run}).empty() ||
+           !speedsBeyondTraining(training, {run}).empty();
 }
 
 QString Validation::describe() const {
@@ -165,20 +231,31 @@ Validation validationOf(const HeldOutPredictions& p, bool positionDependent,
     v.readings = p.measured_um.size();
     v.folds = describeValidationFolds(trainingRuns);
     PredictionInterval& interval = v.interval;
-    std::vector<double> magnitudes;
-    std::map<double, std::vector<double>> byTarget;
+    std::vector<double> magnitudes, beyond;
+    std::map<double, std::vector<double>> byTarget, beyondByTarget;
+    std::size_t part = 0;
     for (std::size_t i = 0; i < p.measured_um.size(); ++i) {
-        magnitudes.push_back(std::abs(p.measured_um[i] - p.predicted_um[i]));
-        if (positionDependent) byTarget[p.position_mm[i]].push_back(magnitudes.back());
+        while (part < p.part_ends.size() && i >= p.part_ends[part]) ++part;
+        const double r = std::abs(p.measured_um[i] - p.predicted_um[i]);
+        const bool extrapolated = part < p.part_beyond.size() && p.part_beyond[part];
+        magnitudes.push_back(r);
+        if (extrapolated) beyond.push_back(r);
+        if (!positionDependent) continue;
+        byTarget[p.position_mm[i]].push_back(r);
+        if (extrapolated) beyondByTarget[p.position_mm[i]].push_back(r);
     }
-    interval.half_width_um = conformalQuantile(magnitudes, interval.level);
-    bool perTarget = positionDependent && byTarget.size() > 1;
-    for (const auto& [x, m] : byTarget) perTarget = perTarget && m.size() >= kReadingsPerTarget;
-    if (perTarget)
-        for (const auto& [x, m] : byTarget) {
-            interval.position_mm.push_back(x);
-            interval.half_width_by_position_um.push_back(conformalQuantile(m, interval.level));
-        }
+    quantiles(magnitudes, byTarget, interval.level, &interval.half_width_um, &interval.position_mm,
+              &interval.half_width_by_position_um);
+    const bool perTarget = !interval.position_mm.empty();
+    interval.beyond_readings = beyond.size();
+    if (beyond.size() >= kReadingsBeyond) {
+        // Per target only where the pooled interval is, on the same targets.
+        std::vector<double> perTargetBeyond;
+        quantiles(beyond, perTarget ? beyondByTarget : decltype(beyondByTarget){}, interval.level,
+                  &interval.beyond_half_width_um, nullptr, &perTargetBeyond);
+        if (perTargetBeyond.size() == interval.position_mm.size())
+            interval.beyond_by_position_um = std::move(perTargetBeyond);
+    }
     interval.method = QStringLiteral(
                           "95 % of the readings the fit did not see fall within it, by "
                           "cross-validation (%1: %2 readings%3)")
@@ -189,7 +266,7 @@ Validation validationOf(const HeldOutPredictions& p, bool positionDependent,
 }
 
 Coverage coverageOf(const ThermalErrorModel& model, const PredictionInterval& interval,
-                    const std::vector<RunData>& runs) {
+                    const std::vector<RunData>& runs, const std::vector<RunData>& training) {
     Coverage c;
     c.claimed = interval.level;
     if (!interval.known()) return c;
@@ -197,9 +274,11 @@ Coverage coverageOf(const ThermalErrorModel& model, const PredictionInterval& in
     for (const RunData& run : runs) {
         const Prediction p = model.predict(run);
         if (!p.ok()) return c;
+        const bool beyond = beyondTraining(training, run);
         for (std::size_t i = 0; i < run.observations.size(); ++i) {
             const ErrorObservation& o = run.observations[i];
-            inside += std::abs(o.error_um - p.error_um[i]) <= interval.halfWidthAt(o.position_mm);
+            inside +=
+                std::abs(o.error_um - p.error_um[i]) <= interval.halfWidthAt(o.position_mm, beyond);
             ++c.readings;
         }
     }
@@ -220,6 +299,19 @@ ValidatedFit fitValidated(const QString& name, const std::vector<RunData>& train
     if (!r.fit.success) return r;
     if (const auto* chooser = dynamic_cast<const AutoModel*>(r.model.get())) {
         r.validation = chooser->validation();
+        try {
+            nestBeyondInterval(training, &r.validation.interval, cancelled);
+        } catch (const ModelError& e) {
+            if (cancelled && cancelled()) {
+                r.fit.success = false;
+                r.fit.message = e.message;
+                return r;
+            }
+            r.validation.interval.beyond_half_width_um = PredictionInterval::kNaN;
+            r.validation.interval.beyond_by_position_um.clear();
+            r.fit.notes
+                << QStringLiteral("no interval beyond the training runs: %1").arg(e.message);
+        }
     } else {
         try {
             r.validation =
@@ -257,6 +349,24 @@ QStringList validationNotes(const Validation& v) {
                                              v.interval.half_width_by_position_um.end()),
                                          0, 'g', 3))
                      .arg(v.interval.method);
+    if (v.interval.knownBeyond())
+        notes << QStringLiteral(
+                     "beyond the training runs' temperature rises or spindle speeds the prediction "
+                     "is an "
+                     "extrapolation: there the interval is ±%1 µm, from the %2 readings of the "
+                     "folds whose held-out part went beyond the runs they fitted on")
+                     .arg(v.interval.beyond_half_width_um, 0, 'g', 3)
+                     .arg(v.interval.beyond_readings);
+    else if (v.interval.known())
+        notes << QStringLiteral(
+                     "%1: on a run beyond the training runs' temperature rises or spindle "
+                     "speeds the interval is not known to hold")
+                     .arg(v.interval.beyond_readings == 0
+                              ? QStringLiteral("no fold of the training runs went beyond the "
+                                               "runs it fitted on")
+                              : QStringLiteral("the folds' extrapolations hold %1 readings, too "
+                                               "few for an interval of their own")
+                                    .arg(v.interval.beyond_readings));
     if (v.worseThanNone())
         notes << QStringLiteral(
                      "worse than no compensation where it was not fitted: %1. It would make "

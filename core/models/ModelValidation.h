@@ -11,6 +11,12 @@
 //    along the screw). This is split conformal prediction with folds (Vovk,
 //    Gammerman & Shafer 2005; Barber et al. 2021, "jackknife+"): it assumes
 //    nothing of the model's form, and the held-out runs' coverage checks it.
+//    A run whose temperature rises or spindle speed go beyond the training
+//    runs' (a higher speed, a warmer room: TrainingEnvelope.h) is an
+//    extrapolation, which the
+//    pooled folds mostly are not. Its interval is the wider of the pooled one
+//    and that of the folds whose held-out part went beyond their own fit's
+//    runs: calibrated on extrapolations, as the prediction is one.
 
 #include <QString>
 #include <QStringList>
@@ -27,6 +33,9 @@ namespace driftlab::models {
 struct ValidationFold {
     std::vector<RunData> fit_on;
     std::vector<RunData> held_out;
+    /// Per held-out part: it goes beyond `fit_on` (beyondTraining), so its
+    /// prediction is an extrapolation. Judged once, when the folds are made.
+    std::vector<bool> held_out_beyond;
 };
 
 /// The folds of the training runs: with several, each left out in turn, and
@@ -43,6 +52,9 @@ QString describeValidationFolds(std::size_t trainingRuns);
 struct HeldOutPredictions {
     std::vector<double> measured_um, predicted_um, position_mm;
     std::vector<std::size_t> part_ends;  ///< one past each part's last reading
+    /// Per part: its temperature rises go beyond those of the runs its fold
+    /// fitted on (risesBeyondTraining).
+    std::vector<bool> part_beyond;
     double rms_um() const;
     /// No compensation's RMS on the same readings: the measured error's own.
     double none_rms_um() const;
@@ -64,10 +76,26 @@ struct PredictionInterval {
     /// Per target position (positioning error), ascending; interpolated
     /// linearly between targets and held beyond them.
     std::vector<double> position_mm, half_width_by_position_um;
+    /// The same from the folds' extrapolations alone (NaN when fewer than
+    /// kReadingsBeyond of their readings went beyond), on the same positions.
+    double beyond_half_width_um = kNaN;
+    std::vector<double> beyond_by_position_um;
+    std::size_t beyond_readings = 0;
     QString method;  ///< how it was formed, for notes and the JSON
     bool known() const { return half_width_um == half_width_um; }
-    double halfWidthAt(double position_mm) const;
+    bool knownBeyond() const { return beyond_half_width_um == beyond_half_width_um; }
+    /// At a position of a run within the training runs' rises, or (`beyond`)
+    /// of one that goes beyond them: then the wider of both intervals.
+    double halfWidthAt(double position_mm, bool beyond = false) const;
 };
+
+/// ", ±4.5 µm on the held-out runs beyond the training runs" where `beyond`
+/// and the interval there is known; "" otherwise.
+QString extrapolationWords(const PredictionInterval& interval, bool beyond);
+
+/// Whether `run`'s temperature rises or spindle speed go beyond those of
+/// `training` (TrainingEnvelope.h), so that its prediction is an extrapolation.
+bool beyondTraining(const std::vector<RunData>& training, const RunData& run);
 
 struct Validation {
     static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -89,7 +117,8 @@ Validation validationOf(const HeldOutPredictions& predictions, bool positionDepe
                         std::size_t trainingRuns);
 
 /// The share of the readings of `runs` whose residual lies within the
-/// interval around the model's prediction.
+/// interval around the model's prediction (the interval beyond the training
+/// runs on a run that goes beyond `training`).
 struct Coverage {
     static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     double share = kNaN;
@@ -100,7 +129,15 @@ struct Coverage {
     bool farBelowClaim() const { return known() && share < claimed - 0.10; }
 };
 Coverage coverageOf(const ThermalErrorModel& model, const PredictionInterval& interval,
-                    const std::vector<RunData>& runs);
+                    const std::vector<RunData>& runs, const std::vector<RunData>& training);
+
+/// `auto` chooses its combination on the very folds that score it, which
+/// flatters it most where the choice matters most: beyond the training runs.
+/// There its interval comes from `auto` itself refitted on each fold that
+/// extrapolates, choice included (nested cross-validation; Varma & Simon
+/// 2006). Sets `interval`'s beyond_* from those folds; throws ModelError.
+void nestBeyondInterval(const std::vector<RunData>& training, PredictionInterval* interval,
+                        const std::function<bool()>& cancelled = {});
 
 /// A model fitted on its training runs and validated on their folds.
 struct ValidatedFit {

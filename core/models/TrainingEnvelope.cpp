@@ -97,4 +97,41 @@ QStringList describeRisesBeyondTraining(const std::vector<RiseBeyondTraining>& b
     return lines;
 }
 
+std::vector<SpeedBeyondTraining> speedsBeyondTraining(const std::vector<RunData>& training,
+                                                      const std::vector<RunData>& runs) {
+    constexpr double kMinMargin_rpm = 10, kMarginOfRange = 0.1;
+    Range range;
+    for (const RunData& run : training) {
+        const std::vector<double>& v = run.spindle_speed_rpm.value;
+        if (v.empty()) return {};
+        const auto [low, high] = std::minmax_element(v.begin(), v.end());
+        range.low = std::min(range.low, *low);
+        range.high = std::max(range.high, *high);
+    }
+    if (training.empty()) return {};
+    const double margin_rpm = std::max(kMinMargin_rpm, kMarginOfRange * (range.high - range.low));
+    std::vector<SpeedBeyondTraining> beyond;
+    for (const RunData& run : runs) {
+        const std::vector<double>& v = run.spindle_speed_rpm.value;
+        if (v.empty()) continue;
+        const auto [low, high] = std::minmax_element(v.begin(), v.end());
+        const double below = range.low - *low, above = *high - range.high;
+        if (std::max(below, above) <= margin_rpm) continue;
+        beyond.push_back({run.run_id, run.spindle_speed_rpm.name, below > above ? *low : *high,
+                          range.low, range.high});
+    }
+    return beyond;
+}
+
+QStringList describeSpeedsBeyondTraining(const std::vector<SpeedBeyondTraining>& beyond) {
+    QStringList lines;
+    for (const SpeedBeyondTraining& b : beyond)
+        lines << QStringLiteral("%1: %2 (spindle speed) %3 rpm (training runs %4 … %5 rpm)")
+                     .arg(b.run, b.channel)
+                     .arg(b.speed_rpm, 0, 'f', 0)
+                     .arg(b.training_low_rpm, 0, 'f', 0)
+                     .arg(b.training_high_rpm, 0, 'f', 0);
+    return lines;
+}
+
 }  // namespace driftlab::models

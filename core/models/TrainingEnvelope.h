@@ -45,4 +45,23 @@ std::vector<RiseBeyondTraining> risesBeyondTraining(const std::vector<RunData>& 
 /// One line per run: "P4: TC15 (ambient) −0.88 K (training runs −0.02 … +1.16 K), …".
 QStringList describeRisesBeyondTraining(const std::vector<RiseBeyondTraining>& beyond);
 
+/// A run whose spindle speed leaves the training runs' range: the heat input
+/// of a spindle's drift, which no thermometer need show (a probe near the
+/// spindle nose warms before any sensor on the housing does).
+struct SpeedBeyondTraining {
+    QString run;
+    QString channel;
+    double speed_rpm = 0;  ///< the run's speed furthest outside the range
+    double training_low_rpm = 0, training_high_rpm = 0;
+};
+
+/// Every run of `runs` whose spindle speed goes beyond the lowest or highest
+/// speed of the training runs by more than max(10 rpm, a tenth of that
+/// range); none where a training run logs no speed.
+std::vector<SpeedBeyondTraining> speedsBeyondTraining(const std::vector<RunData>& training,
+                                                      const std::vector<RunData>& runs);
+
+/// One line per run: "R5000: S (spindle speed) 5000 rpm (training runs 0 … 3750 rpm)".
+QStringList describeSpeedsBeyondTraining(const std::vector<SpeedBeyondTraining>& beyond);
+
 }  // namespace driftlab::models

@@ -121,7 +121,7 @@ AutoAgainstBaselines autoAgainstBaselines(const std::vector<models::RunData>& tr
     if (!fit.success) return result;
     result.chosen = model.chosen();
     result.weights = model.weights();
-    result.coverage = models::coverageOf(model, model.validation().interval, test);
+    result.coverage = models::coverageOf(model, model.validation().interval, test, train);
     // Predicted once: scored, and summed by stretch for the comparison.
     const Eigen::VectorXd measured = stackRows(test, &RunData::observedErrors);
     Eigen::VectorXd predicted(measured.size());

@@ -68,6 +68,44 @@ TEST(ModelValidation, theIntervalIsTheConformalQuantileOfTheHeldOutResiduals) {
     EXPECT_DOUBLE_EQ(validationOf(p, false, 1).interval.half_width_um, 20);
 }
 
+TEST(ModelValidation, beyondTheTrainingRunsTheIntervalComesFromTheFoldsThatExtrapolated) {
+    // Two parts of 20 readings: residuals ±1 µm where the fold interpolated,
+    // ±1 … ±20 µm where its held-out run went beyond the runs it fitted on.
+    HeldOutPredictions p;
+    for (int i = 1; i <= 20; ++i) {
+        p.measured_um.push_back(i % 2 ? 1 : -1);
+        p.predicted_um.push_back(0);
+        p.position_mm.push_back(0);
+    }
+    for (int i = 1; i <= 20; ++i) {
+        p.measured_um.push_back(i % 2 ? i : -i);
+        p.predicted_um.push_back(0);
+        p.position_mm.push_back(0);
+    }
+    p.part_ends = {20, 40};
+    p.part_beyond = {false, true};
+    const PredictionInterval interval = validationOf(p, false, 2).interval;
+    // Pooled: the 39th smallest of twenty 1s and 1 … 20 is 19; beyond: the
+    // largest of the extrapolation's twenty (too few for the 95 % rank).
+    EXPECT_DOUBLE_EQ(interval.half_width_um, 19);
+    ASSERT_TRUE(interval.knownBeyond());
+    EXPECT_DOUBLE_EQ(interval.beyond_half_width_um, 20);
+    EXPECT_EQ(interval.beyond_readings, 20u);
+    EXPECT_DOUBLE_EQ(interval.halfWidthAt(0), 19);
+    EXPECT_DOUBLE_EQ(interval.halfWidthAt(0, true), 20);
+    // Never narrower beyond than within: the wider of both.
+    PredictionInterval narrowBeyond = interval;
+    narrowBeyond.beyond_half_width_um = 5;
+    EXPECT_DOUBLE_EQ(narrowBeyond.halfWidthAt(0, true), 19);
+    // Too few readings of extrapolations: no interval beyond, the pooled one
+    // stands and the notes say it is not known to hold there.
+    p.part_beyond = {false, false};
+    const Validation none = validationOf(p, false, 2);
+    EXPECT_FALSE(none.interval.knownBeyond());
+    EXPECT_DOUBLE_EQ(none.interval.halfWidthAt(0, true), 19);
+    EXPECT_TRUE(validationNotes(none).join(' ').contains("not known to hold"));
+}
+
 TEST(ModelValidation, aPositioningIntervalGrowsWithTheResidualsAlongTheScrew) {
     // At 0 mm residuals of ±0.1 µm, at 700 mm of ±1 µm, 20 of each.
     HeldOutPredictions p;
@@ -124,7 +162,7 @@ TEST(ModelValidation, theIntervalCoversWhatItClaimsOnTheRigsHeldOutRuns) {
     for (const QString& name : {QStringLiteral("heat-transfer"), QStringLiteral("auto")}) {
         const ValidatedFit fit = fitValidated(name, train);
         ASSERT_TRUE(fit.fit.success) << qPrintable(fit.fit.message);
-        const Coverage c = coverageOf(*fit.model, fit.validation.interval, test);
+        const Coverage c = coverageOf(*fit.model, fit.validation.interval, test, train);
         ASSERT_TRUE(c.known()) << qPrintable(name);
         EXPECT_NEAR(c.share, 0.95, 0.10) << qPrintable(name);
         EXPECT_FALSE(c.farBelowClaim()) << qPrintable(name);

@@ -3,7 +3,8 @@
 // lower constant speeds, scored on 5000 rpm, which the fit never saw. On each
 // of the five probes it must beat both least-squares fits a user would make
 // without DriftLab (every rise; the best pair of sensors), and never make the
-// drift worse than no compensation.
+// drift worse than no compensation; its prediction interval, at a speed
+// beyond the training speeds, must hold what it claims.
 
 #include <gtest/gtest.h>
 
@@ -57,8 +58,13 @@ TEST_P(RealSpindleDrift, autoBeatsBothLeastSquaresFitsOnASpeedItWasNotTrainedOn)
                                   << " µm uncompensated; " << qPrintable(chose);
     // Every prediction says how sure it is.
     EXPECT_TRUE(fit.validation.interval.known()) << qPrintable(probe);
+    // 5000 rpm lies beyond the training speeds: the interval there comes from
+    // the folds that extrapolated, and holds what it claims.
+    EXPECT_TRUE(models::beyondTraining(train, heldOut.front())) << qPrintable(probe);
+    EXPECT_TRUE(fit.validation.interval.knownBeyond()) << qPrintable(probe);
     const models::Coverage coverage =
-        models::coverageOf(*fit.model, fit.validation.interval, heldOut);
+        models::coverageOf(*fit.model, fit.validation.interval, heldOut, train);
+    EXPECT_FALSE(coverage.farBelowClaim()) << qPrintable(probe) << ": " << coverage.share;
     test::writeValidationRecord(
         QStringLiteral("fl-thermal"), probe,
         {{QStringLiteral("probe"), probe},
@@ -69,6 +75,7 @@ TEST_P(RealSpindleDrift, autoBeatsBothLeastSquaresFitsOnASpeedItWasNotTrainedOn)
          {QStringLiteral("auto_um"), score.rms_um},
          {QStringLiteral("chosen"), static_cast<const models::AutoModel&>(*fit.model).chosen()},
          {QStringLiteral("interval_um"), fit.validation.interval.half_width_um},
+         {QStringLiteral("beyond_interval_um"), fit.validation.interval.beyond_half_width_um},
          {QStringLiteral("coverage"), coverage.share}});
 }
 

@@ -75,6 +75,34 @@ QString roomCampaign() {
     return QStringLiteral(DRIFTLAB_INDEPENDENT_SPINDLE_ROOM "/seed-64");
 }
 
+TEST(TrainingEnvelope, aSpindleSpeedBeyondTheTrainingSpeedsIsAnExtrapolation) {
+    // Runs at constant speeds after a stop: 1250, 2500 and 3750 rpm to train.
+    auto atSpeed = [](const QString& id, double rpm) {
+        RunData run = runWith(id, 0.5, 3);
+        run.spindle_speed_rpm.name = QStringLiteral("S");
+        run.spindle_speed_rpm.time_s = {0, 60, 3600};
+        run.spindle_speed_rpm.value = {0, rpm, rpm};
+        return run;
+    };
+    const std::vector<RunData> training{atSpeed("R1250", 1250), atSpeed("R2500", 2500),
+                                        atSpeed("R3750", 3750)};
+    // 4000 rpm is within a tenth of the 0 … 3750 rpm range; 5000 is not.
+    const auto beyond =
+        speedsBeyondTraining(training, {atSpeed("R4000", 4000), atSpeed("R5000", 5000)});
+    ASSERT_EQ(beyond.size(), 1u);
+    EXPECT_EQ(beyond[0].run, QStringLiteral("R5000"));
+    EXPECT_DOUBLE_EQ(beyond[0].speed_rpm, 5000);
+    EXPECT_EQ(describeSpeedsBeyondTraining(beyond),
+              QStringList{QStringLiteral(
+                  "R5000: S (spindle speed) 5000 rpm (training runs 0 … 3750 rpm)")});
+    // The same temperatures: no rise is beyond, the speed alone says it.
+    EXPECT_TRUE(risesBeyondTraining(training, {atSpeed("R5000", 5000)}).empty());
+    // A training run without a speed log: nothing to compare.
+    std::vector<RunData> unlogged = training;
+    unlogged[1].spindle_speed_rpm = {};
+    EXPECT_TRUE(speedsBeyondTraining(unlogged, {atSpeed("R5000", 5000)}).empty());
+}
+
 TEST(TrainingEnvelope, namesTheRoomWhereHeldOutRunsCooledAndEveryTrainingRunWarmed) {
     const BundleReadResult read = readBundle(roomCampaign());
     ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());

@@ -83,15 +83,17 @@ FitOutcome runFit(const FitRequest& request, JobControl& control) {
     for (const models::RunData& run : test.runs) {
         RunPrediction p{run.run_id, run.observations, {}, {}, models::scoreModel(*model, {run})};
         p.predicted_um = model->predict(run).error_um;
+        const bool beyond = models::beyondTraining(train.runs, run);
         if (out.validation.interval.known())
             for (const models::ErrorObservation& o : run.observations)
-                p.interval_um.push_back(out.validation.interval.halfWidthAt(o.position_mm));
+                p.interval_um.push_back(out.validation.interval.halfWidthAt(o.position_mm, beyond));
         out.runs.push_back(std::move(p));
     }
     out.gaps = models::gapsOf(train.runs);
     if (out.held_out) {
         out.beyond_training = models::risesBeyondTraining(train.runs, test.runs);
-        out.coverage = models::coverageOf(*model, out.validation.interval, test.runs);
+        out.speeds_beyond = models::speedsBeyondTraining(train.runs, test.runs);
+        out.coverage = models::coverageOf(*model, out.validation.interval, test.runs, train.runs);
         const std::vector<models::DataGap> tested = models::gapsOf(test.runs);
         out.gaps.insert(out.gaps.end(), tested.begin(), tested.end());
     }

@@ -63,6 +63,7 @@ struct FitOutcome {
     std::vector<RunPrediction> runs;  ///< per test run
     /// Where the test runs' temperatures leave the training runs'.
     std::vector<models::RiseBeyondTraining> beyond_training;
+    std::vector<models::SpeedBeyondTraining> speeds_beyond;
     /// The fit's cross-validation against no compensation and its interval,
     /// and the share of the held-out readings inside the interval.
     models::Validation validation;

@@ -265,9 +265,13 @@ void ModelsPage::showFit(const FitOutcome& outcome, const QString& model) {
                      .arg(outcome.pooled.rms_um, 0, 'f', 2)
                      .arg(outcome.pooled.uncompensated_rms_um, 0, 'f', 2);
     if (outcome.coverage.known())
-        shown << tr("Prediction interval ±%1 µm (95 %): %2 % of the held-out readings inside "
-                    "it%3.")
+        shown << tr("Prediction interval ±%1 µm (95 %)%2: %3 % of the held-out readings "
+                    "inside it%4.")
                      .arg(outcome.validation.interval.half_width_um, 0, 'f', 2)
+                     .arg(models::extrapolationWords(
+                              outcome.validation.interval,
+                              !outcome.beyond_training.empty() || !outcome.speeds_beyond.empty())
+                              .toHtmlEscaped())
                      .arg(100 * outcome.coverage.share, 0, 'f', 0)
                      .arg(outcome.coverage.farBelowClaim()
                               ? tr(", far less than it claims: the held-out runs differ from "
@@ -281,6 +285,11 @@ void ModelsPage::showFit(const FitOutcome& outcome, const QString& model) {
         shown << tr("Beyond the training runs' temperature rises (the prediction extrapolates "
                     "there): %1")
                      .arg(beyond.join(QStringLiteral("; ")).toHtmlEscaped());
+    const QStringList faster = models::describeSpeedsBeyondTraining(outcome.speeds_beyond);
+    if (!faster.isEmpty())
+        shown << tr("Beyond the training runs' spindle speeds (the prediction extrapolates "
+                    "there): %1")
+                     .arg(faster.join(QStringLiteral("; ")).toHtmlEscaped());
     m_notes->setText(shown.join(QStringLiteral("<br>")));
     m_predictions->setPredictions(model, outcome.runs);
     if (outcome.fit_id) {
