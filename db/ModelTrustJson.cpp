@@ -6,16 +6,22 @@ namespace driftlab::db {
 
 namespace {
 
+/// [{"position_mm", "half_width_um"}] of the interval's targets.
+QJsonArray byPositionJson(const std::vector<double>& position_mm,
+                          const std::vector<double>& half_width_um) {
+    QJsonArray out;
+    for (std::size_t i = 0; i < half_width_um.size() && i < position_mm.size(); ++i)
+        out.append(QJsonObject{{QStringLiteral("position_mm"), position_mm[i]},
+                               {QStringLiteral("half_width_um"), jsonNumber(half_width_um[i])}});
+    return out;
+}
+
 /// The interval on runs beyond the training runs' rises; {} when unknown.
 QJsonObject beyondJson(const models::PredictionInterval& interval) {
     if (!interval.knownBeyond()) return {};
-    QJsonArray byPosition;
-    for (std::size_t i = 0; i < interval.beyond_by_position_um.size(); ++i)
-        byPosition.append(QJsonObject{
-            {QStringLiteral("position_mm"), interval.position_mm[i]},
-            {QStringLiteral("half_width_um"), jsonNumber(interval.beyond_by_position_um[i])}});
     return {{QStringLiteral("half_width_um"), jsonNumber(interval.beyond_half_width_um)},
-            {QStringLiteral("by_position"), byPosition},
+            {QStringLiteral("by_position"),
+             byPositionJson(interval.position_mm, interval.beyond_by_position_um)},
             {QStringLiteral("readings"), qint64(interval.beyond_readings)}};
 }
 
@@ -24,11 +30,8 @@ QJsonObject beyondJson(const models::PredictionInterval& interval) {
 QJsonObject validationJson(const models::Validation& v) {
     if (!v.known()) return {};
     const models::PredictionInterval& interval = v.interval;
-    QJsonArray byPosition;
-    for (std::size_t i = 0; i < interval.position_mm.size(); ++i)
-        byPosition.append(QJsonObject{
-            {QStringLiteral("position_mm"), interval.position_mm[i]},
-            {QStringLiteral("half_width_um"), jsonNumber(interval.half_width_by_position_um[i])}});
+    const QJsonArray byPosition =
+        byPositionJson(interval.position_mm, interval.half_width_by_position_um);
     return {{QStringLiteral("cv_rms_um"), jsonNumber(v.rms_um)},
             {QStringLiteral("none_cv_rms_um"), jsonNumber(v.none_rms_um)},
             {QStringLiteral("worse_than_none"), v.worseThanNone()},

@@ -80,20 +80,17 @@ int fitCommand(const QStringList& args) {
                   .arg(score.peak_um, 0, 'f', 2)
                   .arg(100 * score.reduction, 0, 'f', 1));
     for (const QString& line : r.trustLines()) printLine(line);
-    const QStringList beyond = models::describeRisesBeyondTraining(r.beyondTraining);
-    if (!beyond.isEmpty()) {
-        printLine(
-            QStringLiteral("beyond the training runs' temperature rises (the prediction "
-                           "extrapolates there):"));
-        for (const QString& line : beyond) printLine(QStringLiteral("  ") + line);
-    }
-    const QStringList faster = models::describeSpeedsBeyondTraining(r.speedsBeyond);
-    if (!faster.isEmpty()) {
-        printLine(
-            QStringLiteral("beyond the training runs' spindle speeds (the prediction "
-                           "extrapolates there):"));
-        for (const QString& line : faster) printLine(QStringLiteral("  ") + line);
-    }
+    // Where the held-out score is an extrapolation, by what the runs left.
+    const auto beyond = [](const QString& what, const QStringList& lines) {
+        if (lines.isEmpty()) return;
+        printLine(QStringLiteral("beyond the training runs' %1 (the prediction extrapolates "
+                                 "there):")
+                      .arg(what));
+        for (const QString& line : lines) printLine(QStringLiteral("  ") + line);
+    };
+    beyond(QStringLiteral("temperature rises"),
+           models::describeRisesBeyondTraining(r.beyondTraining));
+    beyond(QStringLiteral("spindle speeds"), models::describeSpeedsBeyondTraining(r.speedsBeyond));
     return 0;
 }
 
