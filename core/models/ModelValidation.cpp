@@ -207,7 +207,10 @@ double PredictionInterval::halfWidthAt(double x_mm, bool beyond) const {
 }
 
 QString extrapolationWords(const PredictionInterval& interval, bool beyond) {
-    if (!beyond || !interval.knownBeyond()) return {};
+    // Said only where it widens the interval.
+    if (!beyond || !interval.knownBeyond() ||
+        !(interval.beyond_half_width_um > interval.half_width_um))
+        return {};
     return QStringLiteral(", ±%1 µm on the held-out runs beyond the training runs")
         .arg(std::max(interval.half_width_um, interval.beyond_half_width_um), 0, 'f', 2);
 }

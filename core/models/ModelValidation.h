@@ -90,7 +90,7 @@ struct PredictionInterval {
 };
 
 /// ", ±4.5 µm on the held-out runs beyond the training runs" where `beyond`
-/// and the interval there is known; "" otherwise.
+/// and the interval there is known and wider; "" otherwise.
 QString extrapolationWords(const PredictionInterval& interval, bool beyond);
 
 /// Whether `run`'s temperature rises or spindle speed go beyond those of
