@@ -130,9 +130,8 @@ TEST(RunCli, killedLoggerLosesAtMostTheLastSecondAndResumes) {
     const double reachable_s = killedAfter_s * kSpeedup;
     ASSERT_TRUE(state->last_sample_s);
     EXPECT_GE(*state->last_sample_s, reachable_s - 1.5 * kSpeedup)
-        << "killed after " << killedAfter_s << " s";
-    std::printf("killed after %.2f s: run time reachable %.0f s, logged up to %.0f s (%lld rows)\n",
-                killedAfter_s, reachable_s, *state->last_sample_s, (long long)state->rows);
+        << "killed after " << killedAfter_s << " s: run time reachable " << reachable_s
+        << " s, logged up to " << *state->last_sample_s << " s (" << state->rows << " rows)";
     EXPECT_EQ(state->rows, qint64(*state->last_sample_s) + 1);  // 1 s sampling from 0, no hole
     const qint64 campaignId = state->campaign_id;
     store.reset();

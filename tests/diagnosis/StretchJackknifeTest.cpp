@@ -5,7 +5,6 @@
 // the share of the structure a named cause explains, which scales its confidence.
 #include <gtest/gtest.h>
 
-#include <iostream>
 #include <random>
 
 #include "core/diagnosis/ResidualStructure.h"
@@ -100,8 +99,9 @@ TEST(StretchJackknife, theProbabilityIsCalibratedWhereTheTruthIsKnown) {
         better.before = a.before;
         betterFound += probabilityLarger(better, &bOnSame) > 0.9;
     }
-    std::cout << "equal gains: p > 0.9 in " << above90 << ", p > 0.5 in " << above50
-              << ", a better one found in " << betterFound << " of " << draws << " draws\n";
+    SCOPED_TRACE(::testing::Message()
+                 << "equal gains: p > 0.9 in " << above90 << ", p > 0.5 in " << above50
+                 << ", a better one found in " << betterFound << " of " << draws << " draws");
     EXPECT_NEAR(double(above90) / draws, 0.10, 0.025);
     EXPECT_NEAR(double(above50) / draws, 0.50, 0.04);
     EXPECT_GT(double(betterFound) / draws, 0.8);

@@ -107,10 +107,10 @@ TEST(DriveTorque, anInstantaneousLogIsExplainedByTheMotion) {
         worstModelled = std::max(worstModelled, std::abs(fromModel / truth - 1));
         worstSampled = std::max(worstSampled, std::abs(fromSamples / truth - 1));
     }
-    std::printf("mean τ² per minute, worst error: drive model %.1f %%, squared samples %.1f %%\n",
-                100 * worstModelled, 100 * worstSampled);
+    // Mean τ² per minute, worst relative error of each.
     EXPECT_LT(worstModelled, 0.10);
-    EXPECT_GT(worstSampled, 2 * worstModelled);
+    EXPECT_GT(worstSampled, 2 * worstModelled)
+        << "drive model " << worstModelled << ", squared samples " << worstSampled;
 }
 
 // A log that never goes negative is an RMS over the interval (a drive's I²t

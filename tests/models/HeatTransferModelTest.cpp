@@ -69,9 +69,8 @@ TEST(HeatTransferModel, regressionFittedOnOneStateFailsOnOthersWherePhysicsDoesN
         const auto test = runs(rigCampaign(), {QString::fromLatin1(id)});
         const double regression = scoreModel(*mlr, test).rms_um;
         const double simulation = scoreModel(physics, test).rms_um;
-        std::cout << id << ": mlr(S1) " << regression << " µm, heat-transfer(S1) " << simulation
-                  << " µm\n";
-        EXPECT_GT(regression, 3 * simulation) << id;
+        EXPECT_GT(regression, 3 * simulation)
+            << id << ": mlr(S1) " << regression << " µm, heat-transfer(S1) " << simulation << " µm";
     }
 }
 
@@ -128,8 +127,7 @@ TEST(HeatTransferModel, identificationGridIsConvergedAgainstTheRigsGrid) {
     double worst = 0;
     for (std::size_t i = 0; i < points.size(); ++i)
         worst = std::max(worst, std::abs(a.error_um[i] - b.error_um[i]));
-    std::cout << "largest difference 100 cells/2 s vs 400 cells/0.5 s: " << worst << " µm\n";
-    EXPECT_LT(worst, 0.1);
+    EXPECT_LT(worst, 0.1) << "largest difference 100 cells/2 s vs 400 cells/0.5 s, µm";
 }
 
 TEST(HeatTransferModel, aRunPreparedWithItsNutPathSimulatesAsOneCutStepByStep) {

@@ -7,7 +7,8 @@
 
 #include <QStringList>
 #include <cmath>
-#include <iostream>
+#include <sstream>
+#include <string>
 
 #include "core/models/HeatTransferModel.h"
 #include "core/models/ModelScore.h"
@@ -48,10 +49,12 @@ std::vector<double> scoresOf(models::ThermalErrorModel& model, const models::Run
     return rms;
 }
 
-void print(const char* label, const std::vector<double>& rms) {
-    std::cout << label;
-    for (double v : rms) std::cout << " " << v;
-    std::cout << "\n";
+/// "label: 0.31 0.29 …", for a failure message.
+std::string listed(const char* label, const std::vector<double>& rms) {
+    std::ostringstream out;
+    out << label << ":";
+    for (double v : rms) out << " " << v;
+    return out.str();
 }
 
 struct AgainstHeatTransfer {
@@ -66,8 +69,8 @@ AgainstHeatTransfer expectWithinThreeTimesHeatTransfer(const std::vector<models:
     AgainstHeatTransfer out;
     const auto blind = scoresOf(sensorless, runs[0], runs, &out.sensorless_fit);
     out.heat_transfer_rms_um = scoresOf(physics, runs[0], runs);
-    print("fitted on S1, µm RMS on S1..S5\n  sensorless:   ", blind);
-    print("  heat-transfer:", out.heat_transfer_rms_um);
+    SCOPED_TRACE(listed("fitted on S1, µm RMS on S1..S5; sensorless", blind) + "; " +
+                 listed("heat-transfer", out.heat_transfer_rms_um));
     for (std::size_t s = 0; s < runs.size(); ++s)
         EXPECT_LT(blind[s], 3 * out.heat_transfer_rms_um[s])
             << "state " << runs[s].run_id.toStdString();
@@ -101,7 +104,7 @@ TEST(SensorlessModel, putsTheInertiaTorqueOfReversalsIntoTheMotorNotTheNut) {
     const auto runs = fiveStates(0, motorHeat);
     models::SensorlessModel sensorless;
     const auto blind = scoresOf(sensorless, runs[0], runs);
-    print("motor heat 1 W/(N·m)², fitted on S1, µm RMS on S1..S5\n  sensorless:", blind);
+    SCOPED_TRACE(listed("motor heat 1 W/(N·m)², fitted on S1, µm RMS on S1..S5", blind));
     // A cycle-0 difference of two readings, each with the rig's noise.
     const double noiseOfADifference_um = rig::InterferometerSpec{}.noise_um * std::sqrt(2.0);
     for (std::size_t s = 0; s < runs.size(); ++s)
@@ -125,7 +128,7 @@ TEST(SensorlessModel, readsTheRoomWhereItIsLoggedAndHoldsEveryStateUnderARoomSwi
     models::SensorlessModel blindToTheRoom(models::RoomInput::Steady);
     models::FitSummary fit;
     const auto blind = scoresOf(blindToTheRoom, runs[0], runs, &fit);
-    print("room swinging 0.5 K, fitted on S1, blind to the room:", blind);
+    SCOPED_TRACE(listed("room swinging 0.5 K, fitted on S1, blind to the room", blind));
     double worstBlind = 0;
     for (std::size_t s = 0; s < runs.size(); ++s)
         worstBlind = std::max(worstBlind, blind[s] / withRoom.heat_transfer_rms_um[s]);
