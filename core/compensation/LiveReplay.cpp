@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/domain/HeldLinear.h"
 #include "core/models/ModelError.h"
 #include "core/models/ScrewRunSimulation.h"
 
@@ -13,14 +14,8 @@ namespace {
 /// held at the ends; the single offset when there is no table.
 double correctionAt(const LiveUpdate& applied, const std::vector<double>& positions_mm,
                     double x_mm) {
-    const auto& c = applied.table_correction_um;
     if (positions_mm.empty()) return applied.offset_um;
-    if (x_mm <= positions_mm.front()) return c.front();
-    if (x_mm >= positions_mm.back()) return c.back();
-    const auto hi = std::size_t(std::upper_bound(positions_mm.begin(), positions_mm.end(), x_mm) -
-                                positions_mm.begin());
-    const double f = (x_mm - positions_mm[hi - 1]) / (positions_mm[hi] - positions_mm[hi - 1]);
-    return c[hi - 1] + f * (c[hi] - c[hi - 1]);
+    return heldLinearAt(positions_mm, applied.table_correction_um, x_mm);
 }
 
 }  // namespace

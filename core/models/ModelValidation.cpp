@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/domain/HeldLinear.h"
 #include "core/models/AutoModel.h"
 #include "core/models/ModelError.h"
 #include "core/models/ModelFactory.h"
@@ -59,17 +60,6 @@ void quantiles(const std::vector<double>& magnitudes,
         if (positions) positions->push_back(x);
         perTarget->push_back(conformalQuantile(m, level));
     }
-}
-
-/// Linear between the targets, held beyond them.
-double interpolated(const std::vector<double>& position_mm, const std::vector<double>& value,
-                    double x_mm) {
-    if (x_mm <= position_mm.front()) return value.front();
-    if (x_mm >= position_mm.back()) return value.back();
-    const auto hi = std::size_t(std::upper_bound(position_mm.begin(), position_mm.end(), x_mm) -
-                                position_mm.begin());
-    const double f = (x_mm - position_mm[hi - 1]) / (position_mm[hi] - position_mm[hi - 1]);
-    return value[hi - 1] + f * (value[hi] - value[hi - 1]);
 }
 
 }  // namespace
@@ -198,11 +188,11 @@ HeldOutPredictions crossValidatedPredictions(const QString& family,
 double PredictionInterval::halfWidthAt(double x_mm, bool beyond) const {
     const double within = position_mm.empty()
                               ? half_width_um
-                              : interpolated(position_mm, half_width_by_position_um, x_mm);
+                              : heldLinearAt(position_mm, half_width_by_position_um, x_mm);
     if (!beyond || !knownBeyond()) return within;
     const double outside = beyond_by_position_um.empty()
                                ? beyond_half_width_um
-                               : interpolated(position_mm, beyond_by_position_um, x_mm);
+                               : heldLinearAt(position_mm, beyond_by_position_um, x_mm);
     return std::max(within, outside);
 }
 
