@@ -29,6 +29,10 @@ struct DeviceRigSpec {
     /// How far a reading's position may be from a planned target, mm.
     double target_tolerance_mm = 0.05;
     double poll_interval_s = 1.0;
+    /// How long the temperature module and the controller may take to give
+    /// their first reading before the run fails: a device that never answers
+    /// is a wrong address, not an outage to wait out.
+    double connect_timeout_s = 30.0;
     /// Machine, screw, travel and the channels (ids as in the map, with their
     /// roles); without it, a campaign with the map's channels as `other`.
     std::optional<Campaign> campaign_template;

@@ -13,6 +13,7 @@ DeviceRunSource::DeviceRunSource(const DeviceRigSpec& spec, const std::vector<QS
       m_stale_ms(qint64(3000 * spec.poll_interval_s)),
       m_latest(columns.size(), std::numeric_limits<double>::quiet_NaN()),
       m_readAt(columns.size()),
+      m_connectTimeout_ms(qint64(1000 * spec.connect_timeout_s)),
       m_matcher(run.programme.measurements, spec.target_tolerance_mm) {
     devices::DeviceWorkerOptions options;
     options.poll_interval_s = spec.poll_interval_s;
@@ -26,7 +27,8 @@ DeviceRunSource::DeviceRunSource(const DeviceRigSpec& spec, const std::vector<QS
                              if (k < m_temperatureColumn.size())
                                  set(m_temperatureColumn[k], r.values[k], r.time_utc);
                      });
-    watch(m_temperature.get(), temperatureModuleSource(spec.temperature_url.endpoint()));
+    watchFirstReading(m_temperature.get(),
+                      temperatureModuleSource(spec.temperature_url.endpoint()));
     m_temperature->start();
     if (spec.controller_url) {
         m_controller = std::make_unique<devices::ControllerDevice>(*spec.controller_url, options);
@@ -42,8 +44,8 @@ DeviceRunSource::DeviceRunSource(const DeviceRigSpec& spec, const std::vector<QS
                          QStringLiteral("machine state: %1").arg(machineStateName(r.state))});
                 m_machineState = r.state;
             });
-        watch(m_controller.get(),
-              QStringLiteral("controller %1").arg(spec.controller_url->endpoint()));
+        watchFirstReading(m_controller.get(),
+                          QStringLiteral("controller %1").arg(spec.controller_url->endpoint()));
         m_controller->start();
     }
     if (spec.interferometer) startInterferometer(*spec.interferometer, options);
@@ -80,6 +82,29 @@ void DeviceRunSource::watch(Device* device, const QString& source) {
                                                to.toString(Qt::ISODateWithMs),
                                                from.msecsTo(to) / 1000.0));
         });
+}
+
+template <typename Device>
+void DeviceRunSource::watchFirstReading(Device* device, const QString& source) {
+    watch(device, source);
+    const std::size_t k = m_awaited.size();
+    m_awaited.push_back({source, false, {}});
+    QObject::connect(device, &Device::readingReady, [this, k] { m_awaited[k].answered = true; });
+    QObject::connect(device, &Device::errorOccurred,
+                     [this, k](const QString& message) { m_awaited[k].last_error = message; });
+}
+
+QString DeviceRunSource::failure() const {
+    if (m_startedUtc.msecsTo(QDateTime::currentDateTimeUtc()) < m_connectTimeout_ms) return {};
+    for (const Awaited& device : m_awaited)
+        if (!device.answered)
+            return QStringLiteral(
+                       "%1: no reading within %2 s of the start (%3); check its "
+                       "address and that it is powered")
+                .arg(device.source)
+                .arg(m_connectTimeout_ms / 1000.0)
+                .arg(device.last_error.isEmpty() ? QStringLiteral("no answer") : device.last_error);
+    return {};
 }
 
 void DeviceRunSource::startInterferometer(const InterferometerStreamOptions& options,

@@ -28,6 +28,7 @@ public:
     void replan(const procedures::PlannedRun& run) override;
     std::vector<SourceEvent> takeEvents() override { return std::exchange(m_events, {}); }
     bool deviceLost() const override { return m_lostDevices > 0; }
+    QString failure() const override;
 
 private:
     int columnOf(const QString& id) const;
@@ -35,6 +36,9 @@ private:
     /// Errors and gaps of a device into events; counts it lost until its gap closes.
     template <typename Device>
     void watch(Device* device, const QString& source);
+    /// As watch(), and the device must give a reading within the connect timeout.
+    template <typename Device>
+    void watchFirstReading(Device* device, const QString& source);
     void startInterferometer(const InterferometerStreamOptions& options,
                              const devices::DeviceWorkerOptions& worker);
     /// Matches a reading to its planned measurement; logs the correction applied.
@@ -48,6 +52,15 @@ private:
     std::vector<int> m_temperatureColumn;  ///< campaign column of each map channel, or -1
     std::vector<SourceEvent> m_events;
     int m_lostDevices = 0;
+    /// A device that must answer within the connect timeout.
+    struct Awaited {
+        QString source;
+        bool answered = false;
+        QString last_error;
+    };
+    std::vector<Awaited> m_awaited;
+    QDateTime m_startedUtc = QDateTime::currentDateTimeUtc();
+    qint64 m_connectTimeout_ms;
     std::optional<MachineState> m_machineState;
     std::unique_ptr<devices::TemperatureDevice> m_temperature;
     std::unique_ptr<devices::ControllerDevice> m_controller;

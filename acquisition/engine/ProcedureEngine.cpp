@@ -103,11 +103,15 @@ void ProcedureEngine::abort() {
     m_wake.notify_all();
 }
 
+bool ProcedureEngine::stopping() const {
+    return m_abortRequested || (m_options.stop_requested && m_options.stop_requested->load());
+}
+
 bool ProcedureEngine::waitWhilePaused() {
-    if (!m_pauseRequested || m_abortRequested) return !m_abortRequested;
+    if (!m_pauseRequested || stopping()) return !stopping();
     setState(EngineState::Paused);
     std::unique_lock lock(m_mutex);
-    while (m_pauseRequested && !m_abortRequested) {
+    while (m_pauseRequested && !stopping()) {
         if (m_rig.realTime() && QCoreApplication::instance()) {
             // Device signals arrive through this thread's event loop.
             lock.unlock();
@@ -116,7 +120,7 @@ bool ProcedureEngine::waitWhilePaused() {
         }
         m_wake.wait_for(lock, std::chrono::milliseconds(20));
     }
-    if (m_abortRequested) return false;
+    if (stopping()) return false;
     setState(EngineState::Running);
     return true;
 }
@@ -124,7 +128,7 @@ bool ProcedureEngine::waitWhilePaused() {
 bool ProcedureEngine::waitUntil(qint64 wall_ms) {
     std::unique_lock lock(m_mutex);
     for (qint64 now = nowMs(); now < wall_ms; now = nowMs()) {
-        if (m_abortRequested || m_pauseRequested) break;
+        if (stopping() || m_pauseRequested) break;
         if (m_rig.realTime() && QCoreApplication::instance()) {
             lock.unlock();
             QCoreApplication::processEvents();
@@ -132,18 +136,18 @@ bool ProcedureEngine::waitUntil(qint64 wall_ms) {
         }
         m_wake.wait_for(lock, std::chrono::milliseconds(std::min<qint64>(wall_ms - now, 20)));
     }
-    return !m_abortRequested;
+    return !stopping();
 }
 
 bool ProcedureEngine::waitForDevices(RunSource& source) {
     std::unique_lock lock(m_mutex);
-    while (source.deviceLost() && !m_abortRequested) {
+    while (source.deviceLost() && !stopping() && source.failure().isEmpty()) {
         lock.unlock();
         if (QCoreApplication::instance()) QCoreApplication::processEvents();
         lock.lock();
         m_wake.wait_for(lock, std::chrono::milliseconds(20));
     }
-    return !m_abortRequested;
+    return !stopping();
 }
 
 std::optional<qint64> ProcedureEngine::run(QString* error) {
@@ -203,8 +207,8 @@ std::optional<qint64> ProcedureEngine::run(QString* error) {
         if (resuming) playback.resumeFrom(*resumed, m_rig.realTime());
         const bool ok = playRun(playback, error);
         flagLoggedRun(*store, *logger);
-        if (!ok || m_abortRequested) {
-            if (m_abortRequested)
+        if (!ok || stopping()) {
+            if (stopping())
                 logger->appendEvent(
                     QStringLiteral("warning"), QStringLiteral("engine"),
                     QStringLiteral("aborted by the operator at %1 s").arg(playback.time_s));
@@ -284,7 +288,12 @@ bool ProcedureEngine::playRun(RunPlayback& pb, QString* error) {
             setState(EngineState::Running);
             afterPause();
         }
-        if (m_abortRequested) return true;
+        if (stopping()) return true;
+        if (const QString failure = source->failure(); !failure.isEmpty()) {
+            logSourceEvents();
+            pb.logger.appendEvent(QStringLiteral("error"), QStringLiteral("engine"), failure);
+            return fail(error, failure);
+        }
         const double next_s = pb.time_s + step_s;
         const bool paced = m_rig.realTime() || m_options.speedup > 0;
         if (paced && next_s > replayUntil_s) {

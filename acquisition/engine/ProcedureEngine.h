@@ -36,6 +36,9 @@ struct EngineOptions {
     /// The id (in the store) of an interrupted run to continue.
     std::optional<qint64> resume_run_id;
     int commit_interval_ms = 1000;
+    /// Set from elsewhere (a signal handler: it may only store an atomic) to
+    /// stop the run as abort() does; read at every step and in every wait.
+    const std::atomic<bool>* stop_requested = nullptr;
 };
 
 struct EngineProgress {
@@ -87,11 +90,14 @@ private:
     bool playRun(RunPlayback& playback, QString* error);
     /// Waits until `wall_ms` (steady clock) while running; returns false on abort.
     bool waitUntil(qint64 wall_ms);
-    /// Blocks while a device of `source` is lost (policy pause); false on abort.
+    /// Blocks while a device of `source` is lost (policy pause) and the source
+    /// has not failed; false on abort.
     bool waitForDevices(RunSource& source);
     /// Blocks while paused; false on abort.
     bool waitWhilePaused();
     void setState(EngineState state);
+    /// abort() called or the stop flag set.
+    bool stopping() const;
 
     procedures::Procedure m_procedure;
     TestRig& m_rig;

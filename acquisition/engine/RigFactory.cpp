@@ -88,6 +88,10 @@ std::unique_ptr<TestRig> makeDeviceRig(const RigOptions& options, RigError* erro
     if (!(options.poll_interval_s > 0))
         return fail(error, QStringLiteral("poll-interval-s"), QStringLiteral("must be positive"));
     spec.poll_interval_s = options.poll_interval_s;
+    if (!(options.connect_timeout_s > 0))
+        return fail(error, QStringLiteral("connect-timeout-s"),
+                    QStringLiteral("must be a positive number of seconds"));
+    spec.connect_timeout_s = options.connect_timeout_s;
     if (!options.controller_url.isEmpty()) {
         spec.controller_url = modbus::parseModbusUrl(options.controller_url, &why);
         if (!spec.controller_url) return fail(error, QStringLiteral("controller"), why);

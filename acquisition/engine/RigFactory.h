@@ -25,6 +25,7 @@ struct RigOptions {
     QString interferometer_url;  ///< tcp://HOST:PORT, empty: none
     double target_tolerance_mm = 0.05;
     double poll_interval_s = 1.0;
+    double connect_timeout_s = 30.0;  ///< for a device's first reading
     std::optional<Campaign> machine;  ///< machine, screw and channels of a real rig
 };
 

@@ -37,6 +37,9 @@ public:
     virtual std::vector<SourceEvent> takeEvents() { return {}; }
     /// True while a device of the run is lost (no data).
     virtual bool deviceLost() const { return false; }
+    /// Why the run cannot go on (a device that never answered within its
+    /// connect timeout), or empty.
+    virtual QString failure() const { return {}; }
 };
 
 class TestRig {

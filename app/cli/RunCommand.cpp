@@ -97,13 +97,13 @@ int runCommand(const QStringList& args) {
     }
     std::unique_ptr<engine::TestRig> rig = makeRig(parser, parser.value(rigOption), *proc);
 
+    options.stop_requested = &g_stopRequested;
     engine::ProcedureEngine engine(*proc, *rig, options);
     if (uploader) uploader->start();
     std::signal(SIGINT, requestStop);
     std::signal(SIGTERM, requestStop);
     QString lastRun;
     engine.setProgressCallback([&](const engine::EngineProgress& p) {
-        if (g_stopRequested) engine.abort();
         if (p.run != lastRun) {
             endProgressLine();
             lastRun = p.run;

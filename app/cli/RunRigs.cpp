@@ -52,12 +52,17 @@ const QCommandLineOption kTolerance{
 const QCommandLineOption kPoll{QStringLiteral("poll-interval-s"),
                                QStringLiteral("Modbus rig: seconds between polls of the module."),
                                QStringLiteral("S"), QStringLiteral("1")};
+const QCommandLineOption kConnectTimeout{
+    QStringLiteral("connect-timeout-s"),
+    QStringLiteral("Modbus rig: how long the module and the controller may take to give their "
+                   "first reading before the run fails (s)."),
+    QStringLiteral("S"), QStringLiteral("30")};
 
 }  // namespace
 
 QList<QCommandLineOption> rigOptions() {
     return {kSeed,           kEffect,    kOutage,  kDeviceMap, kController,
-            kInterferometer, kTolerance, kMachine, kPoll};
+            kInterferometer, kTolerance, kMachine, kPoll,      kConnectTimeout};
 }
 
 std::unique_ptr<engine::TestRig> makeRig(const QCommandLineParser& parser, const QString& rig,
@@ -75,6 +80,7 @@ std::unique_ptr<engine::TestRig> makeRig(const QCommandLineParser& parser, const
     if (options.rig != QLatin1String("sim")) {
         options.target_tolerance_mm = positiveNumberOption(parser, kTolerance);
         options.poll_interval_s = positiveNumberOption(parser, kPoll);
+        options.connect_timeout_s = positiveNumberOption(parser, kConnectTimeout);
     }
     if (parser.isSet(kMachine)) {
         QFile file(parser.value(kMachine));

@@ -1,15 +1,23 @@
 // The Run page through its actions, on a real store in a temporary folder:
 // pause and resume while data arrive, abort, and the checklist refusing an
-// invalid procedure and a Modbus device that does not answer.
+// invalid procedure and a Modbus device that does not answer; Abort while
+// the run is paused on a lost module (the pymodbus peer SIGKILLed).
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLoggingCategory>
 #include <QSignalSpy>
 #include <QTcpServer>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "core/procedures/Procedure.h"
 #include "core/procedures/ProcedurePlan.h"
+#include "tests/acquisition/DevicePeer.h"
 #include "tests/ui/RunTestSupport.h"
 #include "ui/app/RunController.h"
 #include "ui/app/Session.h"
@@ -174,4 +182,59 @@ TEST(RunPage, checklistNamesAModbusDeviceThatDoesNotAnswerWithoutBlockingTheGui)
     EXPECT_TRUE(why.contains(QStringLiteral("temperature module 127.0.0.1:%1").arg(freePort)))
         << why.toStdString();
     EXPECT_GT(beats, 0);  // the GUI thread's timers ran while the device was asked
+}
+
+TEST(RunPage, abortEndsARunPausedOnALostModule) {
+    if (const QString why = test::peerUnavailable(); !why.isEmpty())
+        GTEST_SKIP() << why.toStdString();
+    RunFixture f(0);
+    // The module's loss is the point of the test, not a warning to print.
+    QLoggingCategory::setFilterRules(QStringLiteral("driftlab.acquisition.devices.warning=false"));
+    int port = 0;
+    auto module = test::startTemperaturePeer(0, &port);
+    const QString path = f.dir.filePath(QStringLiteral("etve.json"));
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "driftlab.procedure/1", "name": "ETVE on the bench", "kind": "etve",
+                   "sample_interval_s": 0.5, "on_device_loss": "pause",
+                   "etve": {"run_id": "E1", "duration_s": 600}})");
+    file.close();
+    QString error;
+    const auto procedure = procedures::loadProcedureFile(path, &error);
+    ASSERT_TRUE(procedure) << error.toStdString();
+    ui::RunSetup setup = f.session.runSetup();
+    setup.procedure = *procedure;
+    setup.procedure_path = path;
+    setup.rig = QStringLiteral("modbus");
+    setup.temperature_url = QStringLiteral("modbus://127.0.0.1:%1").arg(port);
+    // The peer's first channel only: its profile holds implausible values on
+    // purpose, which the checklist refuses.
+    QFile shipped(DRIFTLAB_SOURCE_DIR "/resources/devices/temperature-8ch-pt100.json");
+    ASSERT_TRUE(shipped.open(QIODevice::ReadOnly));
+    QJsonObject map = QJsonDocument::fromJson(shipped.readAll()).object();
+    map[QStringLiteral("channels")] =
+        QJsonArray{map.value(QStringLiteral("channels")).toArray().first()};
+    setup.device_map_path = f.dir.filePath(QStringLiteral("one-channel.json"));
+    QFile mapFile(setup.device_map_path);
+    ASSERT_TRUE(mapFile.open(QIODevice::WriteOnly));
+    mapFile.write(QJsonDocument(map).toJson());
+    mapFile.close();
+    f.session.setRunSetup(setup);
+    ui::RunPage page(f.session);
+    ui::RunController& controller = page.controller();
+    QSignalSpy finished(&controller, &ui::RunController::finished);
+    page.startAction()->trigger();
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return controller.active() && rowsShown(controller) > 2; }, 30000))
+        << page.checklist().problems().join(';').toStdString();
+    test::killPeer(*module);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return controller.state() == EngineState::Paused; }, 10000));
+    ASSERT_TRUE(page.abortAction()->isEnabled());
+    QElapsedTimer sinceAbort;
+    sinceAbort.start();
+    page.abortAction()->trigger();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return finished.count() == 1; }, 10000));
+    EXPECT_LT(sinceAbort.elapsed(), 2000);
+    EXPECT_EQ(controller.state(), EngineState::Interrupted);
+    EXPECT_EQ(uitest::runStatuses(f.store), QStringList{QStringLiteral("E1=interrupted")});
 }
