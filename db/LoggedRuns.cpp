@@ -1,5 +1,7 @@
 // The state of runs logged live: where an interrupted one stopped, and which
 // 'logging' runs lost their logger (RunLogger.h).
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLockFile>
 #include <QSqlError>
 #include <QSqlQuery>
@@ -16,7 +18,9 @@ std::optional<LoggedRunState> loggedRunState(CampaignStore& store, qint64 runId,
         "(SELECT coalesce(sum(row_count), 0) FROM sample_block WHERE run_id = r.id), "
         "(SELECT max(time_s) FROM positioning WHERE run_id = r.id), "
         "(SELECT count(*) FROM positioning WHERE run_id = r.id), "
-        "(SELECT count(*) FROM motion_segment WHERE run_id = r.id) FROM run r WHERE r.id = ?"));
+        "(SELECT count(*) FROM motion_segment WHERE run_id = r.id), "
+        "(SELECT name FROM machine WHERE campaign_id = r.campaign_id), "
+        "(SELECT extra_json FROM campaign WHERE id = r.campaign_id) FROM run r WHERE r.id = ?"));
     q.addBindValue(runId);
     if (!q.exec() || !q.next()) {
         if (error)
@@ -35,6 +39,11 @@ std::optional<LoggedRunState> loggedRunState(CampaignStore& store, qint64 runId,
     if (!q.value(5).isNull()) s.last_reading_s = q.value(5).toDouble();
     s.readings = q.value(6).toLongLong();
     s.motion_segments = q.value(7).toLongLong();
+    s.machine = q.value(8).toString();
+    const QJsonObject extra = QJsonDocument::fromJson(q.value(9).toByteArray()).object();
+    s.rig = extra.value(QStringLiteral("rig")).toString();
+    if (extra.value(QStringLiteral("rig_real_time")).isBool())
+        s.rig_real_time = extra.value(QStringLiteral("rig_real_time")).toBool();
     return s;
 }
 

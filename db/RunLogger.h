@@ -48,6 +48,11 @@ struct LoggedRunState {
     qint64 rows = 0;
     qint64 readings = 0;
     qint64 motion_segments = 0;
+    /// The campaign's machine and the rig it was logged on (`rig`,
+    /// `rig_real_time` in the campaign's extra), so a resume can refuse another rig.
+    QString machine;
+    QString rig;
+    std::optional<bool> rig_real_time;
     /// The later of the two: where logging continues.
     double end_s() const;
 };

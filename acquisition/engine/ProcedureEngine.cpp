@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "acquisition/engine/RunPlayback.h"
+#include "core/domain/MessageText.h"
 #include "db/CampaignStore.h"
 #include "db/RunLogger.h"
 #include "db/SampleFlagStore.h"
@@ -60,6 +61,28 @@ void flagLoggedRun(db::CampaignStore& store, db::RunLogger& logger) {
                            : QStringLiteral("%1 flagged ranges on %2; models leave them out")
                                  .arg(flagged->size())
                                  .arg(channels.join(QStringLiteral(", "))));
+}
+
+/// Why `rig` (its campaign header) is not the rig the resumed run was logged
+/// on, or empty. A simulated run is replayed to where its log ends, so its
+/// rig must be the same to the seed; a real one must log the same channels
+/// of the same machine (its address may change).
+QString otherRig(const db::LoggedRunState& run, const TestRig& testRig, const Campaign& rig,
+                 const std::vector<QString>& loggedColumns) {
+    const bool realTime = testRig.realTime();
+    const QString describe = testRig.describe();
+    if (run.rig_real_time && *run.rig_real_time != realTime)
+        return QStringLiteral("it was logged on %1").arg(run.rig);
+    if (!realTime && !run.rig.isEmpty() && run.rig != describe)
+        return QStringLiteral("it was logged on %1").arg(run.rig);
+    if (!run.machine.isEmpty() && run.machine != rig.machine.name)
+        return QStringLiteral("it was logged on machine '%1', this rig is '%2'")
+            .arg(run.machine, rig.machine.name);
+    if (loggedColumns != rig.sample_columns)
+        return QStringLiteral("it logged the columns %1, this rig logs %2")
+            .arg(quotedList(QStringList(loggedColumns.begin(), loggedColumns.end())),
+                 quotedList(QStringList(rig.sample_columns.begin(), rig.sample_columns.end())));
+    return {};
 }
 
 }  // namespace
@@ -183,10 +206,20 @@ std::optional<qint64> ProcedureEngine::run(QString* error) {
                             .arg(resumed->name, m_procedure.name));
             return std::nullopt;
         }
+        if (const QString why = otherRig(*resumed, m_rig, m_rig.campaignHeader(planned),
+                                         db::sampleColumns(*store, campaignId));
+            !why.isEmpty()) {
+            fail(error, QStringLiteral("run %1 (%2) cannot be resumed on %3: %4")
+                            .arg(resumed->run_id)
+                            .arg(resumed->name, m_rig.describe(), why));
+            return std::nullopt;
+        }
     } else {
         Campaign header = m_rig.campaignHeader(planned);
         header.name = m_procedure.name;
         header.extra[QStringLiteral("procedure")] = procedures::toJson(m_procedure);
+        header.extra[QStringLiteral("rig")] = m_rig.describe();
+        header.extra[QStringLiteral("rig_real_time")] = m_rig.realTime();
         const auto id = store->importCampaign(header, error);
         if (!id) return std::nullopt;
         campaignId = *id;

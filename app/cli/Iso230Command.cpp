@@ -3,10 +3,12 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
+#include <cmath>
 
 #include "app/cli/AnalysisJson.h"
 #include "app/cli/CliCommon.h"
 #include "core/bundle/CsvTable.h"
+#include "core/domain/MessageText.h"
 #include "core/iso/Iso230_2.h"
 
 namespace driftlab::cli {
@@ -31,8 +33,16 @@ std::vector<iso::Reading> readCsv(const QString& path) {
                 table.fail(direction, QStringLiteral("direction must be '+' (positive approach, "
                                                      "↑) or '-' (negative approach, ↓), not '%1'")
                                           .arg(table.text(direction)));
-            readings.push_back(
-                {table.number(target), *d, table.integer(cycle), table.number(deviation)});
+            const double target_mm = table.number(target);
+            if (std::abs(target_mm) > iso::kMaxTarget_mm)
+                table.fail(target, QStringLiteral("target %1 mm is beyond any machine's travel "
+                                                  "(±%2 mm)")
+                                       .arg(numberText(target_mm), numberText(iso::kMaxTarget_mm)));
+            const int cycleNumber = table.integer(cycle);
+            if (cycleNumber < 0)
+                table.fail(cycle,
+                           QStringLiteral("cycle must not be negative, got %1").arg(cycleNumber));
+            readings.push_back({target_mm, *d, cycleNumber, table.number(deviation)});
         }
         if (readings.empty())
             throw CliError(path + QStringLiteral(": no readings after the header"));

@@ -1,6 +1,8 @@
 #include "core/iso/Iso230_2.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -229,6 +231,42 @@ QString checkCounts(const std::vector<Group>& groups, const Settings& settings, 
     return {};
 }
 
+/// Where the readings fall short of what ISO 230-2 asks for (at least five
+/// targets, five per metre of travel, five approaches per direction at each
+/// target on an axis up to the long-axis length). The values are still
+/// determined, but the result is not an ISO 230-2 test: each is a warning.
+QStringList belowMinimums(const std::vector<Group>& groups, const Settings& settings) {
+    QStringList below;
+    const QString prefix = QStringLiteral("below ISO 230-2's minimum: ");
+    const double travel_mm = groups.back().target_mm - groups.front().target_mm;
+    const auto needed = std::max(5, int(std::ceil(5 * travel_mm / 1000.0 - 1e-9)));
+    if (int(groups.size()) < needed)
+        below << prefix + QStringLiteral(
+                              "%1 targets over %2 mm; at least %3 are needed (five, "
+                              "and five per metre)")
+                              .arg(groups.size())
+                              .arg(numberText(travel_mm))
+                              .arg(needed);
+    if (travel_mm > settings.long_axis_mm) return below;
+    std::size_t fewest = std::numeric_limits<std::size_t>::max();
+    double at_mm = 0;
+    Direction direction = Direction::Positive;
+    for (const Group& g : groups)
+        for (Direction d : {Direction::Positive, Direction::Negative})
+            if (g.of(d).size() < fewest) {
+                fewest = g.of(d).size();
+                at_mm = g.target_mm;
+                direction = d;
+            }
+    if (fewest < 5)
+        below << prefix + QStringLiteral(
+                              "%1 approaches at target %2 mm, direction %3; five "
+                              "per direction at every target are needed")
+                              .arg(fewest)
+                              .arg(numberText(at_mm), directionText(direction));
+    return below;
+}
+
 }  // namespace
 
 Evaluation evaluate(const std::vector<Reading>& readings, const Settings& settings) {
@@ -239,15 +277,39 @@ Evaluation evaluate(const std::vector<Reading>& readings, const Settings& settin
         result.error = QStringLiteral("no readings to evaluate");
         return result;
     }
-    for (std::size_t i = 0; i < readings.size(); ++i)
-        if (!std::isfinite(readings[i].target_mm) || !std::isfinite(readings[i].deviation_um)) {
+    for (std::size_t i = 0; i < readings.size(); ++i) {
+        const Reading& r = readings[i];
+        if (!std::isfinite(r.target_mm) || !std::isfinite(r.deviation_um)) {
             result.error =
                 QStringLiteral("reading %1: target or deviation is not a finite number").arg(i + 1);
             return result;
         }
+        if (std::abs(r.target_mm) > kMaxTarget_mm) {
+            result.error = QStringLiteral(
+                               "reading %1: target %2 mm is beyond any machine's travel "
+                               "(±%3 mm)")
+                               .arg(i + 1)
+                               .arg(numberText(r.target_mm), numberText(kMaxTarget_mm));
+            return result;
+        }
+        if (r.cycle < 0) {
+            result.error = QStringLiteral("reading %1: cycle %2 is not a cycle number (0 or more)")
+                               .arg(i + 1)
+                               .arg(r.cycle);
+            return result;
+        }
+    }
     const std::vector<Group> groups = groupByTarget(readings, settings.target_tolerance_mm);
+    if (groups.size() < 2) {
+        result.error = QStringLiteral(
+                           "one target (%1 mm): E, M and A compare targets, so at "
+                           "least 2 are needed; ISO 230-2 asks for at least 5")
+                           .arg(numberText(groups.front().target_mm));
+        return result;
+    }
     const QString skipped = checkCounts(groups, settings, &result.error);
     if (!result.ok()) return result;
+    result.warnings << belowMinimums(groups, settings);
     const bool withS = skipped.isEmpty();
     if (!withS) result.skipped << skipped;
 

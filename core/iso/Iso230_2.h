@@ -54,6 +54,9 @@ struct Settings {
     bool isValid(QString* why) const;
 };
 
+/// Targets beyond ±100 m are no machine's (a unit or exponent slip).
+constexpr double kMaxTarget_mm = 100000;
+
 constexpr double kNotDetermined = std::numeric_limits<double>::quiet_NaN();
 
 /// What is known at one target i. NaN = not determined (a skipped value).

@@ -5,8 +5,13 @@
 #include <QJsonParseError>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
+#include "core/domain/JsonDuplicateKeys.h"
+#include "core/domain/MessageText.h"
 #include "core/procedures/ProcedureJsonReader.h"
+#include "core/procedures/ProcedureLimits.h"
+#include "core/procedures/ProcedurePlan.h"
 #include "core/procedures/ProcedureSpecsJson.h"
 
 namespace driftlab::procedures {
@@ -21,6 +26,78 @@ const QStringList kSpecKeys{QStringLiteral("positioning"), QStringLiteral("therm
                             QStringLiteral("etve"), QStringLiteral("spindle"),
                             QStringLiteral("moving_states")};
 const QStringList kDeviceLoss{QStringLiteral("continue"), QStringLiteral("pause")};
+
+/// Readings and motion segments planning `spec` allocates (warm-up and
+/// cool-down passes over the targets, strokes in between).
+double movingStateSize(double warmup_s, double block_s, double cooldown_s,
+                       double cooldown_interval_s, int targets, const RangeMm& range_mm,
+                       double feed_mm_min, double* measurements) {
+    const double passes =
+        std::ceil(warmup_s / block_s) + std::ceil(cooldown_s / cooldown_interval_s) + 1;
+    *measurements = passes * targets * 2;
+    const double stroke_s = (range_mm.to_mm - range_mm.from_mm) / feed_mm_min * 60.0;
+    return warmup_s / stroke_s + *measurements * 2;
+}
+
+/// Refuses a procedure whose plan would not fit a run, counted before
+/// planning allocates it: readings, motion, duration and sample rows.
+void checkPlannedSize(const Procedure& p, const ObjectReader& r, const QString& key) {
+    auto refuse = [&](const QString& what, double count, double limit, const QString& fewer) {
+        if (count > limit)
+            r.fail(key, QStringLiteral("plans %1 %2 in a run, more than the %3 it may hold; %4")
+                            .arg(numberText(count), what, numberText(limit), fewer));
+    };
+    const QString readings = QStringLiteral("interferometer readings");
+    const QString segments = QStringLiteral("motion segments");
+    double measurements = 0;
+    if (p.positioning) {
+        const PositioningSpec& s = *p.positioning;
+        const double span_mm = s.span_mm.to_mm - s.span_mm.from_mm;
+        const double targets = std::max(5.0, std::ceil(s.targets_per_metre * span_mm / 1000.0));
+        refuse(readings, targets * 2 * s.cycles, limits::kMaxMeasurementsPerRun,
+               QStringLiteral("fewer cycles or targets_per_metre"));
+    }
+    if (const auto* s = p.thermal_distortion ? &*p.thermal_distortion : nullptr) {
+        const double motion =
+            movingStateSize(s->max_warmup_s, s->interval_s, s->cooldown_s, s->cooldown_interval_s,
+                            s->targets, s->range_mm, s->feed_mm_min, &measurements);
+        refuse(readings, measurements, limits::kMaxMeasurementsPerRun,
+               QStringLiteral("longer interval_s or cooldown_interval_s, or fewer targets"));
+        refuse(segments, motion, limits::kMaxMotionSegmentsPerRun,
+               QStringLiteral("a longer range_mm or a lower feed_mm_min"));
+    }
+    if (p.moving_states)
+        for (const MovingStateStep& step : p.moving_states->states) {
+            const MovingStatesSpec& s = *p.moving_states;
+            const double motion =
+                movingStateSize(step.warmup_s, s.block_s, step.cooldown_s, s.cooldown_interval_s,
+                                s.targets, step.range_mm, step.feed_mm_min, &measurements);
+            refuse(readings, measurements, limits::kMaxMeasurementsPerRun,
+                   QStringLiteral("a longer block_s or cooldown_interval_s, or fewer targets"));
+            refuse(segments, motion, limits::kMaxMotionSegmentsPerRun,
+                   QStringLiteral("a longer range_mm or a lower feed_mm_min in ") + step.run_id);
+        }
+    std::vector<PlannedRun> planned;
+    try {
+        planned = planRuns(p);
+    } catch (const std::invalid_argument& e) {
+        r.fail(key, QString::fromStdString(e.what()));
+    }
+    for (const PlannedRun& run : planned) {
+        if (run.duration_s > limits::kMaxRunDuration_s)
+            r.fail(key, QStringLiteral("run %1 would last %2 s, longer than the %3 s (30 days) a "
+                                       "run may last")
+                            .arg(run.id, numberText(run.duration_s),
+                                 numberText(limits::kMaxRunDuration_s)));
+        const double rows = run.duration_s / p.sample_interval_s;
+        if (rows > limits::kMaxRowsPerRun)
+            r.fail(QStringLiteral("sample_interval_s"),
+                   QStringLiteral("run %1 would log %2 sample rows (%3 s every %4 s), more than "
+                                  "the %5 a run may hold; a longer interval")
+                       .arg(run.id, numberText(std::ceil(rows)), numberText(run.duration_s),
+                            numberText(p.sample_interval_s), numberText(limits::kMaxRowsPerRun)));
+    }
+}
 
 Procedure readProcedure(const QJsonObject& json) {
     QStringList known{"format",        "name",      "description",
@@ -39,7 +116,12 @@ Procedure readProcedure(const QJsonObject& json) {
     r.choice("kind", kind, kKindNames, true);
     p.kind = ProcedureKind(kind);
     r.range("travel_mm", p.travel_mm);
-    r.positive("sample_interval_s", p.sample_interval_s);
+    if (std::abs(p.travel_mm.from_mm) > limits::kMaxTravel_mm ||
+        std::abs(p.travel_mm.to_mm) > limits::kMaxTravel_mm)
+        r.fail("travel_mm", QStringLiteral("out of range: the ends must be within ±%1 mm")
+                                .arg(limits::kMaxTravel_mm));
+    r.positiveIn("sample_interval_s", p.sample_interval_s, limits::kMinSampleInterval_s,
+                 limits::kMaxSampleInterval_s);
     int loss = int(p.on_device_loss);
     r.choice("on_device_loss", loss, kDeviceLoss);
     p.on_device_loss = DeviceLossPolicy(loss);
@@ -70,6 +152,7 @@ Procedure readProcedure(const QJsonObject& json) {
             p.moving_states = readMovingStates(spec, path, p.travel_mm);
             break;
     }
+    checkPlannedSize(p, r, key);
     return p;
 }
 
@@ -104,12 +187,15 @@ std::optional<Procedure> loadProcedureFile(const QString& path, QString* error) 
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) return failWith(file.errorString());
     QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
+    const QByteArray text = file.readAll();
+    const QJsonDocument doc = QJsonDocument::fromJson(text, &parseError);
     if (parseError.error != QJsonParseError::NoError)
         return failWith(QStringLiteral("not valid JSON at offset %1: %2")
                             .arg(parseError.offset)
                             .arg(parseError.errorString()));
     if (!doc.isObject()) return failWith(QStringLiteral("a procedure must be a JSON object"));
+    if (const auto duplicate = findDuplicateJsonKey(text, QStringLiteral("procedure")))
+        return failWith(duplicate->toString());
     QString why;
     auto procedure = parseProcedure(doc.object(), &why);
     if (!procedure) return failWith(why);

@@ -59,26 +59,44 @@ void ObjectReader::number(const QString& key, double& value) {
         fail(key, QStringLiteral("must be a finite number, got %1").arg(numberText(value)));
 }
 
-void ObjectReader::positive(const QString& key, double& value) {
+void ObjectReader::positive(const QString& key, double& value, double at_most) {
     number(key, value);
     if (!(value > 0))
         fail(key, QStringLiteral("must be a positive number, got %1").arg(numberText(value)));
+    if (value > at_most) failAbove(key, value, at_most);
 }
 
-void ObjectReader::nonNegative(const QString& key, double& value) {
+void ObjectReader::nonNegative(const QString& key, double& value, double at_most) {
     number(key, value);
     if (value < 0) fail(key, QStringLiteral("must not be negative, got %1").arg(numberText(value)));
+    if (value > at_most) failAbove(key, value, at_most);
 }
 
-void ObjectReader::integerAtLeast(const QString& key, int& value, int minimum) {
+void ObjectReader::positiveIn(const QString& key, double& value, double lowest, double highest) {
+    positive(key, value, highest);
+    if (value < lowest)
+        fail(key, QStringLiteral("out of range: must be from %1 to %2, got %3")
+                      .arg(numberText(lowest), numberText(highest), numberText(value)));
+}
+
+void ObjectReader::failAbove(const QString& key, double value, double at_most) const {
+    fail(key, QStringLiteral("out of range: must be at most %1, got %2")
+                  .arg(numberText(at_most), numberText(value)));
+}
+
+void ObjectReader::integerIn(const QString& key, int& value, int lowest, int highest) {
+    double d = value;
     if (has(key)) {
-        const double d = numberValue(key).toDouble();
-        if (d != std::floor(d) || std::abs(d) > 1e9)
+        d = numberValue(key).toDouble();
+        if (d != std::floor(d))
             fail(key, QStringLiteral("must be an integer, got %1").arg(numberText(d)));
-        value = int(d);
     }
-    if (value < minimum)
-        fail(key, QStringLiteral("must be at least %1, got %2").arg(minimum).arg(value));
+    if (d < lowest || d > highest)
+        fail(key, QStringLiteral("out of range: must be an integer from %1 to %2, got %3")
+                      .arg(lowest)
+                      .arg(highest)
+                      .arg(numberText(d)));
+    value = int(d);
 }
 
 void ObjectReader::seed(const QString& key, unsigned& value) {

@@ -33,10 +33,15 @@ public:
     [[noreturn]] void fail(const QString& key, const QString& why) const;
     bool has(const QString& key) const { return m_object.contains(key); }
 
-    void number(const QString& key, double& value);    ///< finite
-    void positive(const QString& key, double& value);  ///< finite, > 0
-    void nonNegative(const QString& key, double& value);
-    void integerAtLeast(const QString& key, int& value, int minimum);
+    void number(const QString& key, double& value);  ///< finite
+    /// Finite, > 0 and at most `at_most`.
+    void positive(const QString& key, double& value, double at_most);
+    /// Finite, ≥ 0 and at most `at_most`.
+    void nonNegative(const QString& key, double& value, double at_most);
+    /// Finite, > 0 and in [lowest, highest].
+    void positiveIn(const QString& key, double& value, double lowest, double highest);
+    /// An integer in [lowest, highest].
+    void integerIn(const QString& key, int& value, int lowest, int highest);
     void seed(const QString& key, unsigned& value);  ///< integer in 0 … 2^32 − 1
     void string(const QString& key, QString& value, bool required = false);
     void runId(const QString& key, QString& value);  ///< [A-Za-z0-9_]+
@@ -49,6 +54,7 @@ public:
 
 private:
     QJsonValue numberValue(const QString& key) const;
+    [[noreturn]] void failAbove(const QString& key, double value, double at_most) const;
 
     QJsonObject m_object;  // a copy (implicitly shared), so a temporary can be read
     QString m_path;

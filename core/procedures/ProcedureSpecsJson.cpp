@@ -4,6 +4,7 @@
 #include <QSet>
 
 #include "core/procedures/ProcedureJsonReader.h"
+#include "core/procedures/ProcedureLimits.h"
 #include "core/rig/MovingStateProgramme.h"
 
 namespace driftlab::procedures {
@@ -23,6 +24,10 @@ void checkOverrunLeavesRoom(const ObjectReader& r, const QString& key, double ov
                         .arg(overrun_mm));
 }
 
+void readFeed(ObjectReader& r, const QString& key, double& feed_mm_min) {
+    r.positiveIn(key, feed_mm_min, limits::kMinFeed_mm_min, limits::kMaxFeed_mm_min);
+}
+
 }  // namespace
 
 PositioningSpec readPositioning(const QJsonObject& json, const QString& path,
@@ -38,25 +43,30 @@ PositioningSpec readPositioning(const QJsonObject& json, const QString& path,
         r.fail("targets_per_metre",
                QStringLiteral("ISO 230-2 asks for at least 5 targets per metre, got %1")
                    .arg(s.targets_per_metre));
-    r.nonNegative("irregularity", s.irregularity);
+    if (s.targets_per_metre > limits::kMaxTargetsPerMetre)
+        r.fail("targets_per_metre",
+               QStringLiteral("out of range: at most %1 (a 1 mm pitch), got %2")
+                   .arg(numberText(limits::kMaxTargetsPerMetre), numberText(s.targets_per_metre)));
+    r.nonNegative("irregularity", s.irregularity, 1);
     if (s.irregularity >= 0.1)
-        r.fail("irregularity", QStringLiteral("must be below 0.1 (10 %% of the interval), got %1")
-                                   .arg(s.irregularity));
+        r.fail(
+            "irregularity",
+            QStringLiteral("must be below 0.1 (10 % of the interval), got %1").arg(s.irregularity));
     r.seed("seed", s.seed);
-    r.integerAtLeast("cycles", s.cycles, 1);
+    r.integerIn("cycles", s.cycles, 1, limits::kMaxCycles);
     int order = int(s.order);
     r.choice("order", order, kOrders);
     s.order = ApproachOrder(order);
-    r.positive("feed_mm_min", s.feed_mm_min);
+    readFeed(r, "feed_mm_min", s.feed_mm_min);
     // Positive: without an overrun there is no reversal before the other direction.
-    r.positive("overrun_mm", s.overrun_mm);
+    r.positive("overrun_mm", s.overrun_mm, limits::kMaxTravel_mm);
     if (s.span_mm.from_mm - s.overrun_mm < travel_mm.from_mm ||
         s.span_mm.to_mm + s.overrun_mm > travel_mm.to_mm)
         r.fail("overrun_mm", QStringLiteral("%1 mm past the span [%2, %3] mm leaves the travel")
                                  .arg(s.overrun_mm)
                                  .arg(s.span_mm.from_mm)
                                  .arg(s.span_mm.to_mm));
-    r.nonNegative("dwell_s", s.dwell_s);
+    r.nonNegative("dwell_s", s.dwell_s, limits::kMaxDwell_s);
     const std::vector<double> targets = positioningTargets(s);
     for (std::size_t i = 1; i < targets.size(); ++i)
         if (!(targets[i] > targets[i - 1]))
@@ -72,17 +82,17 @@ ThermalDistortionSpec readThermalDistortion(const QJsonObject& json, const QStri
                     "pass_feed_mm_min", "dwell_s", "overrun_mm"});
     ThermalDistortionSpec s;
     r.runId("run_id", s.run_id);
-    r.positive("feed_mm_min", s.feed_mm_min);
+    readFeed(r, "feed_mm_min", s.feed_mm_min);
     r.range("range_mm", s.range_mm, &travel_mm);
-    r.integerAtLeast("targets", s.targets, 2);
-    r.positive("interval_s", s.interval_s);
-    r.positive("stabilisation_um", s.stabilisation_um);
-    r.positive("max_warmup_s", s.max_warmup_s);
-    r.nonNegative("cooldown_s", s.cooldown_s);
-    r.positive("cooldown_interval_s", s.cooldown_interval_s);
-    r.positive("pass_feed_mm_min", s.pass_feed_mm_min);
-    r.nonNegative("dwell_s", s.dwell_s);
-    r.nonNegative("overrun_mm", s.overrun_mm);
+    r.integerIn("targets", s.targets, 2, limits::kMaxTargets);
+    r.positive("interval_s", s.interval_s, limits::kMaxRunDuration_s);
+    r.positive("stabilisation_um", s.stabilisation_um, limits::kMaxStabilisation_um);
+    r.positive("max_warmup_s", s.max_warmup_s, limits::kMaxRunDuration_s);
+    r.nonNegative("cooldown_s", s.cooldown_s, limits::kMaxRunDuration_s);
+    r.positive("cooldown_interval_s", s.cooldown_interval_s, limits::kMaxRunDuration_s);
+    readFeed(r, "pass_feed_mm_min", s.pass_feed_mm_min);
+    r.nonNegative("dwell_s", s.dwell_s, limits::kMaxDwell_s);
+    r.nonNegative("overrun_mm", s.overrun_mm, limits::kMaxTravel_mm);
     checkOverrunLeavesRoom(r, "overrun_mm", s.overrun_mm, travel_mm);
     return s;
 }
@@ -91,7 +101,7 @@ EtveSpec readEtve(const QJsonObject& json, const QString& path) {
     ObjectReader r(json, path, {"run_id", "duration_s"});
     EtveSpec s;
     r.runId("run_id", s.run_id);
-    r.positive("duration_s", s.duration_s);
+    r.positive("duration_s", s.duration_s, limits::kMaxRunDuration_s);
     return s;
 }
 
@@ -111,8 +121,8 @@ SpindleSpec readSpindle(const QJsonObject& json, const QString& path) {
             ObjectReader b(blocks[i].toObject(), at, {"duration_s", "speed_rpm"});
             SpindleBlock block;
             if (!b.has("duration_s")) b.fail("duration_s", QStringLiteral("is required"));
-            b.positive("duration_s", block.duration_s);
-            b.nonNegative("speed_rpm", block.speed_rpm);
+            b.positive("duration_s", block.duration_s, limits::kMaxRunDuration_s);
+            b.nonNegative("speed_rpm", block.speed_rpm, limits::kMaxSpindleSpeed_rpm);
             s.blocks.push_back(block);
         }
     }
@@ -140,15 +150,15 @@ MovingStatesSpec readMovingStates(const QJsonObject& json, const QString& path,
             st.fail("run_id",
                     QStringLiteral("\"%1\" is used by an earlier state").arg(step.run_id));
         ids.insert(step.run_id);
-        st.positive("feed_mm_min", step.feed_mm_min);
+        readFeed(st, "feed_mm_min", step.feed_mm_min);
         st.range("range_mm", step.range_mm, &travel_mm);
-        st.positive("warmup_s", step.warmup_s);
-        st.nonNegative("cooldown_s", step.cooldown_s);
+        st.positive("warmup_s", step.warmup_s, limits::kMaxRunDuration_s);
+        st.nonNegative("cooldown_s", step.cooldown_s, limits::kMaxRunDuration_s);
         s.states.push_back(step);
     }
-    r.integerAtLeast("targets", s.targets, 2);
-    r.positive("block_s", s.block_s);
-    r.positive("cooldown_interval_s", s.cooldown_interval_s);
+    r.integerIn("targets", s.targets, 2, limits::kMaxTargets);
+    r.positive("block_s", s.block_s, limits::kMaxRunDuration_s);
+    r.positive("cooldown_interval_s", s.cooldown_interval_s, limits::kMaxRunDuration_s);
     checkOverrunLeavesRoom(r, "states", rig::MovingStateSpec{}.overrun_mm, travel_mm);
     return s;
 }

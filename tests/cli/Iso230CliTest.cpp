@@ -50,8 +50,9 @@ TEST(Iso230Cli, jsonHasTheDesignShapeWithTheGoldenValues) {
     EXPECT_EQ(o.value(QStringLiteral("standard")).toString(), QStringLiteral("ISO 230-2:2014"));
     EXPECT_EQ(o.value(QStringLiteral("coverage_factor")).toDouble(), 2);
     EXPECT_EQ(o.value(QStringLiteral("unit")).toString(), QStringLiteral("µm"));
-    // G1's swing common to every target is warned about (tests/iso: 1.67 µm).
-    EXPECT_EQ(o.value(QStringLiteral("warnings")).toArray().size(), 1);
+    // G1's three targets are below the standard's five, and its swing common
+    // to every target is warned about (tests/iso: 1.67 µm).
+    EXPECT_EQ(o.value(QStringLiteral("warnings")).toArray().size(), 2);
     const QJsonArray targets = o.value(QStringLiteral("targets")).toArray();
     ASSERT_EQ(targets.size(), 3);
     // '+' rows are ↑: at 0 mm x̄↑ = 15/5 = 3 (cycles, not targets), x̄↓ = −2,
@@ -140,13 +141,61 @@ TEST(Iso230Cli, missingColumnAndTooFewReadingsAreNamed) {
                                  ":1: missing column 'cycle' in header");
     const QString once = writeFile(dir, QStringLiteral("once.csv"),
                                    "target_mm,direction,cycle,deviation_um\n"
-                                   "0,+,1,2\n0,+,2,3\n0,-,1,1\n");
+                                   "0,+,1,2\n0,+,2,3\n0,-,1,1\n"
+                                   "100,+,1,2\n100,+,2,3\n100,-,1,1\n100,-,2,1\n");
     r = iso({once});
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_EQ(reason(r.err), "driftlab-cli iso230-2: " + once.toUtf8() +
                                  ": target 0 mm, direction - (↓): 1 reading, the standard "
                                  "deviation s needs at least 2 (ISO 230-2 allows one approach "
-                                 "per direction only on axes over 2000 mm; this travel is 0 mm)");
+                                 "per direction only on axes over 2000 mm; this travel is 100 mm)");
+}
+
+TEST(Iso230Cli, theStandardsMinimumsAreRefusedOrWarnedAndNamed) {
+    QTemporaryDir dir;
+    // One target: E, M and A compare targets, nothing to evaluate.
+    QByteArray single = "target_mm,direction,cycle,deviation_um\n";
+    for (int c = 1; c <= 5; ++c)
+        single += QByteArray("0,+,") + QByteArray::number(c) + ",1\n0,-," + QByteArray::number(c) +
+                  ",2\n";
+    const QString one = writeFile(dir, QStringLiteral("one.csv"), single);
+    CliResult r = iso({one});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(reason(r.err), "driftlab-cli iso230-2: " + one.toUtf8() +
+                                 ": one target (0 mm): E, M and A compare targets, so at least 2 "
+                                 "are needed; ISO 230-2 asks for at least 5");
+    // A negative cycle and a target no machine has: refused at their cell.
+    const QString negative = writeFile(dir, QStringLiteral("negative.csv"),
+                                       "target_mm,direction,cycle,deviation_um\n0,+,-1,2\n");
+    r = iso({negative});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(reason(r.err), "driftlab-cli iso230-2: " + negative.toUtf8() +
+                                 ":2:3: cycle must not be negative, got -1");
+    const QString far = writeFile(dir, QStringLiteral("far.csv"),
+                                  "target_mm,direction,cycle,deviation_um\n1e300,+,1,2\n");
+    r = iso({far});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(reason(r.err), "driftlab-cli iso230-2: " + far.toUtf8() +
+                                 ":2:1: target 1e+300 mm is beyond any machine's travel (±100000 "
+                                 "mm)");
+    // Two targets, two approaches each: evaluated, and both shortfalls named.
+    const QString few = writeFile(dir, QStringLiteral("few.csv"),
+                                  "target_mm,direction,cycle,deviation_um\n"
+                                  "0,+,1,2\n0,+,2,3\n0,-,1,1\n0,-,2,1\n"
+                                  "1000,+,1,2\n1000,+,2,3\n1000,-,1,1\n1000,-,2,1\n");
+    r = iso({few, QStringLiteral("--json")});
+    ASSERT_EQ(r.exitCode, 0) << r.err.constData();
+    const QJsonArray warnings = json(r).value(QStringLiteral("warnings")).toArray();
+    EXPECT_TRUE(warnings.contains(QStringLiteral(
+        "below ISO 230-2's minimum: 2 targets over 1000 mm; at least 5 are needed (five, and "
+        "five per metre)")))
+        << r.out.constData();
+    EXPECT_TRUE(warnings.contains(QStringLiteral(
+        "below ISO 230-2's minimum: 2 approaches at target 0 mm, direction + (↑); five per "
+        "direction at every target are needed")))
+        << r.out.constData();
+    EXPECT_TRUE(r.err.contains("warning: below ISO 230-2's minimum: 2 targets"))
+        << r.err.constData();
 }
 
 TEST(Iso230Cli, usageErrorsExitTwo) {

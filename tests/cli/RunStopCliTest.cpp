@@ -2,7 +2,8 @@
 // (a module that never answered, or one SIGKILLed mid-run), SIGINT and
 // SIGTERM each end `driftlab-cli run` within 2 s, the run kept as
 // `interrupted` and resumable. A device that never answers fails the run
-// after its connect timeout instead of pausing it for ever.
+// after its connect timeout instead of pausing it for ever; a run logged on
+// one rig is not resumed on another.
 #include <gtest/gtest.h>
 
 #include <QElapsedTimer>
@@ -83,8 +84,9 @@ qint64 stopWith(QProcess& run, int signal) {
 TEST(RunStopCli, sigintEndsARunPausedOnAModuleThatNeverAnswered) {
     QTemporaryDir dir;
     const QString db = dir.filePath(QStringLiteral("bench.sqlite"));
+    const QString procedure = writeEtve(dir, 600);
     QProcess run;
-    run.start(QStringLiteral(DRIFTLAB_CLI), runArgs(writeEtve(dir, 600), db, freePort()));
+    run.start(QStringLiteral(DRIFTLAB_CLI), runArgs(procedure, db, freePort()));
     QByteArray err;
     ASSERT_TRUE(waitForStderr(run, err, "paused)")) << err.constData();
     const qint64 took_ms = stopWith(run, SIGINT);
@@ -94,6 +96,17 @@ TEST(RunStopCli, sigintEndsARunPausedOnAModuleThatNeverAnswered) {
     EXPECT_EQ(run.exitStatus(), QProcess::NormalExit);
     EXPECT_EQ(run.exitCode(), 3) << err.constData();
     EXPECT_TRUE(err.contains("marked interrupted")) << err.constData();
+    EXPECT_EQ(runStatuses(db), QStringList{QStringLiteral("E1=interrupted")});
+
+    // Resumed on the simulated rig it would get simulated readings: refused.
+    const CliResult onSim =
+        runCli({"run", "--procedure", procedure, "--db", db, "--rig", "sim", "--resume", "1"});
+    EXPECT_EQ(onSim.exitCode, 1) << onSim.err.constData();
+    EXPECT_TRUE(
+        reason(onSim.err).startsWith("driftlab-cli run: run 1 (E1) cannot be resumed on simulated "
+                                     "rig (seed 1): it was logged on "
+                                     "temperature module temperature-8ch-pt100 at 127.0.0.1:"))
+        << onSim.err.constData();
     EXPECT_EQ(runStatuses(db), QStringList{QStringLiteral("E1=interrupted")});
 }
 

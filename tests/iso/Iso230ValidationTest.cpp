@@ -11,6 +11,7 @@ namespace {
 
 using test::add;
 using test::golden3x5;
+using test::withoutMinimums;
 using test::longAxisSingleApproach;
 
 constexpr double kRoundOffUm = 1e-12;
@@ -86,8 +87,9 @@ TEST(Iso230Validation, driftFromCycleToCycleIsWarnedWithItsNumbers) {
     const Evaluation e = evaluate(r);
     ASSERT_TRUE(e.ok()) << qPrintable(e.error);
     EXPECT_NEAR(e.targets[0].s_up_um, std::sqrt(2.5), kRoundOffUm);
-    ASSERT_EQ(e.warnings.size(), 1);
-    EXPECT_EQ(e.warnings.front(),
+    const QStringList warnings = withoutMinimums(e.warnings);
+    ASSERT_EQ(warnings.size(), 1);
+    EXPECT_EQ(warnings.front(),
               QStringLiteral("deviations drift from cycle to cycle: the per-cycle mean deviation "
                              "spans 4.00 µm (lowest in cycle 1, highest in cycle 5; linear trend "
                              "1.000 µm per cycle), more than the mean standard deviation 1.58 µm; "
@@ -104,11 +106,12 @@ TEST(Iso230Validation, driftThatRisesAndFallsIsWarnedThoughItsTrendIsFlat) {
             add(r, target, d, {0, 2, 4, 2, 0});
     const Evaluation e = evaluate(r);
     ASSERT_TRUE(e.ok()) << qPrintable(e.error);
-    ASSERT_EQ(e.warnings.size(), 1);
-    EXPECT_TRUE(e.warnings.front().startsWith(
+    const QStringList warnings = withoutMinimums(e.warnings);
+    ASSERT_EQ(warnings.size(), 1);
+    EXPECT_TRUE(warnings.front().startsWith(
         QStringLiteral("deviations drift from cycle to cycle: the per-cycle mean deviation spans "
                        "4.00 µm (lowest in cycle 1, highest in cycle 3; linear trend 0.000 µm")))
-        << qPrintable(e.warnings.front());
+        << qPrintable(warnings.front());
 }
 
 TEST(Iso230Validation, stationaryScatterIsNotCalledDrift) {
@@ -123,7 +126,7 @@ TEST(Iso230Validation, stationaryScatterIsNotCalledDrift) {
     const Evaluation e = evaluate(r);
     ASSERT_TRUE(e.ok()) << qPrintable(e.error);
     EXPECT_NEAR(e.targets[0].s_up_um, 1, kRoundOffUm);
-    EXPECT_TRUE(e.warnings.isEmpty()) << qPrintable(e.warnings.join('\n'));
+    EXPECT_TRUE(withoutMinimums(e.warnings).isEmpty()) << qPrintable(e.warnings.join('\n'));
 }
 
 TEST(Iso230Validation, repeatedReadingOfOneCycleIsWarned) {

@@ -134,7 +134,7 @@ TEST(ProcedureValidation, everyBadValueIsRefusedNamingItsKey) {
         {P,
          {"positioning", "cycles"},
          0,
-         "procedure.positioning.cycles: must be at least 1, got 0"},
+         "procedure.positioning.cycles: out of range: must be an integer from 1 to 1000, got 0"},
         {P, {"positioning", "cycles"}, 2.5, "procedure.positioning.cycles: must be an integer"},
         {P,
          {"positioning", "cycles"},
@@ -197,7 +197,8 @@ TEST(ProcedureValidation, everyBadValueIsRefusedNamingItsKey) {
         {T,
          {"thermal_distortion", "targets"},
          1,
-         "procedure.thermal_distortion.targets: must be at least 2, got 1"},
+         "procedure.thermal_distortion.targets: out of range: must be an integer from 2 to 10000, "
+         "got 1"},
         {T,
          {"thermal_distortion", "stabilisation_um"},
          0,
@@ -257,6 +258,64 @@ TEST(ProcedureValidation, everyBadValueIsRefusedNamingItsKey) {
          QJsonArray{QJsonObject{{"feed_mm_min", 8000}}},
          "procedure.moving_states.states[0].run_id: is required"},
         {M, {"moving_states", "block_s"}, 0, "procedure.moving_states.block_s: must be a positive"},
+        // What a machine and a store can hold: refused at once, naming the key.
+        {P,
+         {"sample_interval_s"},
+         1e-9,
+         "procedure.sample_interval_s: out of range: must be from 0.001 to 3600, got 1e-09"},
+        {P,
+         {"positioning", "cycles"},
+         1099511627776.0,
+         "procedure.positioning.cycles: out of range: must be an integer from 1 to 1000, got "
+         "1.09951162778e+12"},
+        {P,
+         {"positioning"},
+         QJsonObject{{"cycles", 1000}, {"targets_per_metre", 1000}},
+         "procedure.positioning: plans 1380000 interferometer readings in a run, more than the "
+         "1000000 it may hold; fewer cycles or targets_per_metre"},
+        {P,
+         {"positioning", "targets_per_metre"},
+         1e9,
+         "procedure.positioning.targets_per_metre: out of range: at most 1000 (a 1 mm pitch), "
+         "got 1000000000"},
+        {P,
+         {"positioning", "feed_mm_min"},
+         1e7,
+         "procedure.positioning.feed_mm_min: out of range: must be at most 200000, got 10000000"},
+        {P,
+         {"positioning", "feed_mm_min"},
+         0.01,
+         "procedure.positioning.feed_mm_min: out of range: must be from 1 to 200000, got 0.01"},
+        {P,
+         {"travel_mm"},
+         QJsonArray{0, 1e300},
+         "procedure.travel_mm: out of range: the ends must be within ±100000 mm"},
+        {"etve-8h.json",
+         {"etve", "duration_s"},
+         1e7,
+         "procedure.etve.duration_s: out of range: must be at most 2592000, got 10000000"},
+        {"etve-8h.json",
+         {"sample_interval_s"},
+         0.001,
+         "procedure.sample_interval_s: run E1 would log 28800000 sample rows (28800 s every "
+         "0.001 s), more than the 20000000 a run may hold"},
+        {S,
+         {"spindle", "blocks"},
+         QJsonArray{QJsonObject{{"duration_s", 1e300}, {"speed_rpm", 3000}}},
+         "procedure.spindle.blocks[0].duration_s: out of range: must be at most 2592000"},
+        {S,
+         {"spindle", "blocks"},
+         QJsonArray{QJsonObject{{"duration_s", 60}, {"speed_rpm", 1e6}}},
+         "procedure.spindle.blocks[0].speed_rpm: out of range: must be at most 200000"},
+        {T, {"thermal_distortion", "interval_s"}, 1e-6, "procedure.thermal_distortion: plans "},
+        {M,
+         {"moving_states", "states"},
+         QJsonArray{QJsonObject{{"run_id", "S1"},
+                                {"feed_mm_min", 200000},
+                                {"range_mm", QJsonArray{210, 211}},
+                                {"warmup_s", 2592000}}},
+         "procedure.moving_states: plans 8640190388 motion segments in a run, more than the "
+         "5000000"},
     };
     for (const BadCase& c : cases) {
         const QJsonObject json = withValue(toJson(shipped(c.base)), c.path, c.value);
@@ -265,4 +324,36 @@ TEST(ProcedureValidation, everyBadValueIsRefusedNamingItsKey) {
         EXPECT_TRUE(error.startsWith(QString::fromUtf8(c.error)))
             << "expected: " << c.error << "\n     got: " << error.toStdString();
     }
+}
+
+TEST(ProcedureFiles, aKeyNamedTwiceIsRefusedWithBothLines) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("twice.json"));
+    auto load = [&](const QByteArray& text) {
+        QFile f(path);
+        EXPECT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(text);
+        f.close();
+        QString error;
+        EXPECT_FALSE(loadProcedureFile(path, &error));
+        return error;
+    };
+    EXPECT_EQ(load(R"({"name":"a","name":"b","format":"driftlab.procedure/1","kind":"etve"})"),
+              path + QStringLiteral(": procedure.name: named twice in one object (lines 1 and "
+                                    "1); only one may stand"));
+    EXPECT_EQ(load("{\"format\": \"driftlab.procedure/1\", \"name\": \"p\", \"kind\": \"etve\",\n"
+                   " \"etve\": {\"duration_s\": 60,\n"
+                   "          \"run_id\": \"E1\",\n"
+                   "          \"duration_\\u0073\": 6000}}"),
+              path + QStringLiteral(": procedure.etve.duration_s: named twice in one object "
+                                    "(lines 2 and 4); only one may stand"));
+    // The same key in two objects, and key text inside string values, are fine.
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write(R"({"format": "driftlab.procedure/1", "name": "name, \"name\": {", "kind":
+        "moving-states", "moving_states": {"states": [{"run_id": "S1", "feed_mm_min": 8000,
+        "range_mm": [210, 490]}, {"run_id": "S2", "feed_mm_min": 6000, "range_mm": [210, 490]}]}})");
+    f.close();
+    QString error;
+    EXPECT_TRUE(loadProcedureFile(path, &error)) << error.toStdString();
 }
