@@ -133,7 +133,8 @@ std::unique_ptr<RunLogger> RunLogger::resume(CampaignStore& store, qint64 runId,
         new RunLogger(store, runId, sampleColumns(store, state->campaign_id).size()));
     if (!logger->start(error)) return nullptr;
     logger->m_lastTime_s = state->last_sample_s;
-    logger->m_rows = state->rows;
+    logger->m_rows = logger->m_savedRows = state->rows;
+    logger->m_savedUntil_s = state->last_sample_s;
     logger->appendEvent(QStringLiteral("info"), QStringLiteral("logger"),
                         QStringLiteral("resumed after %1 s").arg(state->end_s()));
     return logger;
@@ -218,14 +219,15 @@ bool RunLogger::commit(QString* error) {
             throw;
         }
     } catch (const QString& why) {
-        return failWith(error, QStringLiteral("%1: run %2: commit failed, the data since the last "
-                                              "commit is kept in memory: %3")
+        return failWith(error, QStringLiteral("%1: run %2: the store refuses the rows: %3")
                                    .arg(m_store.path())
                                    .arg(m_runId)
                                    .arg(why));
     }
     m_fullBlocks.clear();
     m_blockDirty = false;
+    m_savedRows = m_rows;
+    m_savedUntil_s = m_lastTime_s;
     m_readings.clear();
     m_motion.clear();
     m_events.clear();

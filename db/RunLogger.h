@@ -86,6 +86,10 @@ public:
     std::size_t columnCount() const { return m_columns; }
     std::optional<double> lastRowTime_s() const { return m_lastTime_s; }
     qint64 rowsLogged() const { return m_rows; }
+    /// Rows appended since the last successful commit (held in memory only).
+    qint64 unsavedRows() const { return m_rows - m_savedRows; }
+    /// The time of the last row the store holds.
+    std::optional<double> savedUntil_s() const { return m_savedUntil_s; }
 
     /// The lock file of a run being logged in the store at `storePath`.
     static QString lockPath(const QString& storePath, qint64 runId);
@@ -115,8 +119,8 @@ private:
         QString level, source, message;
     };
     std::vector<Event> m_events;
-    std::optional<double> m_lastTime_s;
-    qint64 m_rows = 0;
+    std::optional<double> m_lastTime_s, m_savedUntil_s;
+    qint64 m_rows = 0, m_savedRows = 0;
     QElapsedTimer m_sinceCommit;
     bool m_finished = false;
 };

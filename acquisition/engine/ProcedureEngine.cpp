@@ -245,7 +245,11 @@ std::optional<qint64> ProcedureEngine::run(QString* error) {
                 logger->appendEvent(
                     QStringLiteral("warning"), QStringLiteral("engine"),
                     QStringLiteral("aborted by the operator at %1 s").arg(playback.time_s));
-            logger->finish(QStringLiteral("interrupted"), ok ? error : nullptr);
+            const bool marked = logger->finish(QStringLiteral("interrupted"), ok ? error : nullptr);
+            if (!ok && !marked && error)
+                *error += QStringLiteral(
+                    "; the run is marked interrupted when the store is next "
+                    "opened");
             setState(EngineState::Interrupted);
             if (!ok) return std::nullopt;
             return campaignId;
@@ -273,10 +277,14 @@ bool ProcedureEngine::playRun(RunPlayback& pb, QString* error) {
     qint64 wallStart = nowMs();
     double runStart_s = pb.time_s;
     const double replayUntil_s = m_rig.realTime() ? -1 : pb.time_s;
-    int failedCommits = 0;
+    QString storeProblem;
+    // Each retry writes every row held so far: a store that keeps refusing
+    // is retried less and less often, up to every 30 s.
+    int commitInterval_ms = m_options.commit_interval_ms;
     auto report = [&] {
         if (m_progress)
-            m_progress({pb.run.id, pb.index, pb.count, pb.time_s, pb.run.duration_s, state()});
+            m_progress({pb.run.id, pb.index, pb.count, pb.time_s, pb.run.duration_s, state(),
+                        storeProblem, pb.logger.savedUntil_s().value_or(0)});
     };
     report();
     // After a pause a simulated run goes on where it stopped; a real one at
@@ -345,16 +353,44 @@ bool ProcedureEngine::playRun(RunPlayback& pb, QString* error) {
         pb.logMotionUntil(pb.time_s);
         logSourceEvents();
         QString why;
-        if (pb.logger.commitIfDue(&why, m_options.commit_interval_ms)) {
-            failedCommits = 0;
-        } else if (++failedCommits > 30) {
-            // Rows stay in memory between failed commits; a store that keeps
-            // refusing them for half a minute is a failure, not a hiccup.
-            return fail(error, why);
+        if (pb.logger.commitIfDue(&why, commitInterval_ms)) {
+            commitInterval_ms = m_options.commit_interval_ms;
+            if (!storeProblem.isEmpty())
+                pb.logger.appendEvent(QStringLiteral("warning"), QStringLiteral("logger"),
+                                      QStringLiteral("the store took the rows again at %1 s "
+                                                     "after refusing them: %2")
+                                          .arg(pb.time_s)
+                                          .arg(storeProblem));
+            storeProblem.clear();
+        } else {
+            // A full disk is the operator's to fix: the rows stay in memory and
+            // every commit is retried, until memory would run out.
+            storeProblem = why;
+            commitInterval_ms = std::min(2 * commitInterval_ms, 30'000);
+            if (pb.logger.unsavedRows() > m_options.max_unsaved_rows)
+                return fail(error,
+                            QStringLiteral("%1; the store refused rows for too long: run %2 from "
+                                           "%3 s to %4 s (%5 rows) could not be saved and is "
+                                           "lost")
+                                .arg(why, pb.run.id)
+                                .arg(numberText(pb.logger.savedUntil_s().value_or(0)),
+                                     numberText(pb.time_s))
+                                .arg(pb.logger.unsavedRows()));
         }
         report();
     }
     pb.logMotionUntil(std::numeric_limits<double>::max());
+    // The run's last rows are kept as long as the operator may free space:
+    // until the store takes them or the run is stopped.
+    for (QString why; !pb.logger.commit(&why);) {
+        storeProblem = why;
+        report();
+        if (!waitUntil(nowMs() + m_options.commit_interval_ms)) break;
+    }
+    if (!storeProblem.isEmpty()) {
+        storeProblem.clear();
+        report();
+    }
     return true;
 }
 

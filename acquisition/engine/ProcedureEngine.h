@@ -36,6 +36,10 @@ struct EngineOptions {
     /// The id (in the store) of an interrupted run to continue.
     std::optional<qint64> resume_run_id;
     int commit_interval_ms = 1000;
+    /// Rows held in memory while the store refuses them (a full disk): the
+    /// run goes on and commits are retried until the operator frees space;
+    /// beyond this many the run fails, naming what is lost.
+    qint64 max_unsaved_rows = 1'000'000;
     /// Set from elsewhere (a signal handler: it may only store an atomic) to
     /// stop the run as abort() does; read at every step and in every wait.
     const std::atomic<bool>* stop_requested = nullptr;
@@ -48,6 +52,10 @@ struct EngineProgress {
     double time_s = 0;
     double duration_s = 0;
     EngineState state = EngineState::Idle;
+    /// Why the store refuses the rows (empty when it takes them), and since
+    /// what run time they are held in memory only.
+    QString store_problem;
+    double unsaved_since_s = 0;
 };
 
 /// A logged row, for the live read path: run time and the campaign's columns.

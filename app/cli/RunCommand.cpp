@@ -57,14 +57,19 @@ int runCommand(const QStringList& args) {
         QStringLiteral("Run time per wall-clock time on the simulated rig (0: as fast as it "
                        "goes)."),
         QStringLiteral("N"), QStringLiteral("0")};
+    const QCommandLineOption unsaved{
+        QStringLiteral("max-unsaved-rows"),
+        QStringLiteral("While the store refuses writes (a full disk), how many rows to hold in "
+                       "memory until space is freed; beyond them the run fails."),
+        QStringLiteral("N"), QStringLiteral("1000000")};
     const QCommandLineOption resume{QStringLiteral("resume"),
                                     QStringLiteral("Continue the interrupted run with this id."),
                                     QStringLiteral("RUN")};
-    parseArguments(
-        parser, args,
-        QList<QCommandLineOption>{procedure, rigOption, db, spool, uploadTimeout, speedup, resume} +
-            rigOptions(),
-        {{}, {}, {}, {procedure, db}});
+    parseArguments(parser, args,
+                   QList<QCommandLineOption>{procedure, rigOption, db, spool, uploadTimeout,
+                                             speedup, unsaved, resume} +
+                       rigOptions(),
+                   {{}, {}, {}, {procedure, db}});
 
     QString error;
     const auto proc = procedures::loadProcedureFile(parser.value(procedure), &error);
@@ -84,6 +89,7 @@ int runCommand(const QStringList& args) {
             options.store_path, spoolId, serverUrl,
             [](const QString& message) { std::fprintf(stderr, "%s\n", qPrintable(message)); });
     }
+    options.max_unsaved_rows = qint64(positiveNumberOption(parser, unsaved));
     options.speedup = numberOption(parser, speedup);
     if (options.speedup < 0) throw CliError(QStringLiteral("--speedup: must be ≥ 0"), 2);
     if (parser.isSet(resume)) {
@@ -102,8 +108,19 @@ int runCommand(const QStringList& args) {
     if (uploader) uploader->start();
     std::signal(SIGINT, requestStop);
     std::signal(SIGTERM, requestStop);
-    QString lastRun;
+    QString lastRun, storeProblem;
     engine.setProgressCallback([&](const engine::EngineProgress& p) {
+        if (p.store_problem != storeProblem) {
+            endProgressLine();
+            if (!p.store_problem.isEmpty())
+                std::fprintf(stderr,
+                             "warning: %s; the rows from %g s on are kept in memory and saved "
+                             "once the store takes them again: free space for it now\n",
+                             qPrintable(p.store_problem), p.unsaved_since_s);
+            else
+                std::fprintf(stderr, "the store takes the rows again; none is lost\n");
+            storeProblem = p.store_problem;
+        }
         if (p.run != lastRun) {
             endProgressLine();
             lastRun = p.run;

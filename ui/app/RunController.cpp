@@ -195,6 +195,19 @@ void RunController::poll() {
         m_runShown = int(latest.run_index);
         emit runStarted(m_runShown, latest.run);
     }
+    if (latest.store_problem != m_progress.store_problem) {
+        // The session's event log is what the operator watches: a store that
+        // refuses the rows is theirs to fix (free space) before memory runs out.
+        if (!latest.store_problem.isEmpty())
+            emit m_session.event(QStringLiteral("error"), QStringLiteral("store"),
+                                 tr("%1; the rows from %2 s on are kept in memory and saved once "
+                                    "the store takes them again: free space for it now")
+                                     .arg(latest.store_problem)
+                                     .arg(latest.unsaved_since_s));
+        else
+            emit m_session.event(QStringLiteral("info"), QStringLiteral("store"),
+                                 tr("the store takes the rows again; none is lost"));
+    }
     m_progress = latest;
     emit progressChanged(latest);
     if (latest.state != m_state) {
