@@ -45,3 +45,51 @@ TEST(ConnectionRefusalCli, aDeviceMapUnitThatIsNoTemperatureIsRefusedBeforeTheSt
                   .arg(mapPath));
     EXPECT_FALSE(QFile::exists(db));
 }
+
+TEST(ConnectionRefusalCli, aModbusHostThatDoesNotResolveIsSaidSoNotConnectionRefused) {
+    const CliResult r =
+        runCli({"compensate", exampleBundlePath(), "--push", "modbus://no-such-host.invalid:502"});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_TRUE(reason(r.err).startsWith(
+        "driftlab-cli compensate: push failed: no-such-host.invalid:502: cannot connect: host "
+        "'no-such-host.invalid' could not be resolved ("))
+        << r.err.constData();
+    EXPECT_TRUE(reason(r.err).endsWith("; nothing written")) << r.err.constData();
+    EXPECT_FALSE(r.err.contains("Connection refused")) << r.err.constData();
+}
+
+TEST(ConnectionRefusalCli, aModbusPortOutOfRangeOrNotANumberNamesThePortAndTheRange) {
+    for (const char* port : {"70000", "abc", "0"}) {
+        const QString url = QStringLiteral("modbus://127.0.0.1:%1").arg(QLatin1String(port));
+        const CliResult r = runCli({"compensate", exampleBundlePath(), "--push", url});
+        EXPECT_EQ(r.exitCode, 2) << port;
+        EXPECT_EQ(QString::fromUtf8(reason(r.err)),
+                  QStringLiteral("driftlab-cli compensate: --push: '%1': port '%2' is not a "
+                                 "number from 1 to 65535 (expected modbus://HOST:PORT[/UNIT])")
+                      .arg(url, QLatin1String(port)));
+        EXPECT_TRUE(r.out.isEmpty()) << port << r.out.constData();
+    }
+}
+
+TEST(ConnectionRefusalCli, aPostgresqlPortOutOfRangeNamesTheUrlWithoutItsPassword) {
+    QTemporaryDir dir;
+    const CliResult imported =
+        runCli({"import", exampleBundlePath(), "--db", "postgresql://user@127.0.0.1:99999/db"});
+    EXPECT_EQ(imported.exitCode, 2);
+    EXPECT_EQ(QString::fromUtf8(reason(imported.err)),
+              QStringLiteral("driftlab-cli import: --db: postgresql://user@127.0.0.1:99999/db: "
+                             "port '99999' is not a number from 1 to 65535 (expected "
+                             "postgresql://USER@HOST[:PORT]/DB)"));
+    // A run logs into its spool first: a refused URL leaves no spool behind.
+    const QString spool = dir.filePath(QStringLiteral("spool.sqlite"));
+    const CliResult run =
+        runCli({"run", "--procedure", writeIn(dir, QStringLiteral("etve.json"), kEtveProcedure),
+                "--db", "postgresql://user:secret@127.0.0.1:abc/db", "--spool", spool});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_EQ(QString::fromUtf8(reason(run.err)),
+              QStringLiteral("driftlab-cli run: --db: postgresql://user@127.0.0.1:abc/db: "
+                             "port 'abc' is not a number from 1 to 65535 (expected "
+                             "postgresql://USER@HOST[:PORT]/DB)"));
+    EXPECT_FALSE(run.err.contains("secret")) << run.err.constData();
+    EXPECT_FALSE(QFile::exists(spool));
+}
