@@ -6,8 +6,16 @@
 #include <gtest/gtest.h>
 
 #include <QFile>
+#include <QProcess>
 #include <QTemporaryDir>
 
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include "acquisition/modbus/ModbusLink.h"
+#include "acquisition/modbus/ModbusUrl.h"
+#include "tests/acquisition/DevicePeer.h"
 #include "tests/cli/CliRunner.h"
 #include "tests/core/BundleTestSupport.h"
 
@@ -23,6 +31,18 @@ QString writeIn(const QTemporaryDir& dir, const QString& name, const QByteArray&
     const QString path = dir.filePath(name);
     writeFile(path, content);
     return path;
+}
+
+/// Whether this host can listen on ::1 (a container may have no IPv6 loopback).
+bool hasIpv6Loopback() {
+    const int s = ::socket(AF_INET6, SOCK_STREAM, 0);
+    if (s < 0) return false;
+    sockaddr_in6 address{};
+    address.sin6_family = AF_INET6;
+    address.sin6_addr = in6addr_loopback;
+    const bool ok = ::bind(s, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0;
+    ::close(s);
+    return ok;
 }
 
 }  // namespace
@@ -44,6 +64,43 @@ TEST(ConnectionRefusalCli, aDeviceMapUnitThatIsNoTemperatureIsRefusedBeforeTheSt
                              "channel (°C, °F or K)")
                   .arg(mapPath));
     EXPECT_FALSE(QFile::exists(db));
+}
+
+TEST(ConnectionRefusalCli, controllerSimRefusesAHostThatIsNoAddressAndListensOnNothing) {
+    const CliResult r = runCli({"controller-sim", "--host", "bogus.invalid", "--port", "0"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_TRUE(reason(r.err).startsWith(
+        "driftlab-cli controller-sim: --host: 'bogus.invalid' is neither an IP address nor a "
+        "host name that resolves ("))
+        << r.err.constData();
+    EXPECT_TRUE(r.out.isEmpty()) << r.out.constData();  // no "serving … on" line
+}
+
+TEST(ConnectionRefusalCli, controllerSimOnIpv6PrintsABracketedUrlThatReadsBack) {
+    if (!hasIpv6Loopback()) GTEST_SKIP() << "no IPv6 loopback (::1) on this host";
+    QProcess sim;
+    sim.start(QStringLiteral(DRIFTLAB_CLI), {"controller-sim", "--host", "::1", "--port", "0"});
+    ASSERT_TRUE(sim.waitForStarted());
+    const QString line = peerLine(sim);
+    const QString prefix = QStringLiteral("controller-sim: serving DriftLab's register map on ");
+    ASSERT_TRUE(line.startsWith(prefix + QStringLiteral("modbus://[::1]:")))
+        << qPrintable(line) << sim.readAllStandardError().constData();
+    const QString printed = line.mid(prefix.size()).section(QLatin1Char(' '), 0, 0);
+    QString error;
+    const auto url = modbus::parseModbusUrl(printed, &error);
+    ASSERT_TRUE(url) << qPrintable(error);
+    EXPECT_EQ(url->host, QStringLiteral("::1"));
+    EXPECT_EQ(url->toString(), printed);
+    // The URL reaches the controller it names: register 0 holds the map's magic.
+    modbus::ModbusLink link(*url, 5.0);
+    ASSERT_TRUE(link.connect(&error)) << qPrintable(error);
+    std::vector<std::uint16_t> words;
+    ASSERT_TRUE(link.readRegisters(0, 2, words, &error)) << qPrintable(error);
+    EXPECT_EQ(words[0], 0x4446);
+    link.close();
+    sim.terminate();
+    ASSERT_TRUE(sim.waitForFinished(30'000));
+    EXPECT_EQ(sim.exitCode(), 0);
 }
 
 TEST(ConnectionRefusalCli, aModbusHostThatDoesNotResolveIsSaidSoNotConnectionRefused) {
