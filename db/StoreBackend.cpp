@@ -5,6 +5,8 @@
 #include <QUrl>
 #include <QUrlQuery>
 
+#include "core/domain/ServerUrl.h"
+
 namespace driftlab::db {
 
 StoreBackend backendOf(const QSqlDatabase& db) {
@@ -20,26 +22,30 @@ bool isServerStoreUrl(const QString& location) {
 QString ServerStoreUrl::display() const {
     QString text = QStringLiteral("postgresql://");
     if (!user.isEmpty()) text += user + QLatin1Char('@');
-    text += host + QLatin1Char(':') + QString::number(port) + QLatin1Char('/') + database;
+    // An IPv6 address needs its brackets back to be read as host:port.
+    text += (host.contains(QLatin1Char(':')) ? QLatin1Char('[') + host + QLatin1Char(']') : host) +
+            QLatin1Char(':') + QString::number(port) + QLatin1Char('/') + database;
     return text;
 }
 
 std::optional<ServerStoreUrl> parseServerStoreUrl(const QString& text, QString* error) {
-    const QUrl url(text, QUrl::StrictMode);
     auto fail = [&](const QString& why) -> std::optional<ServerStoreUrl> {
         *error = QStringLiteral("%1: %2 (expected postgresql://USER@HOST[:PORT]/DB)")
-                     .arg(QUrl(text).toDisplayString(QUrl::RemovePassword), why);
+                     .arg(urlWithoutPassword(text), why);
         return std::nullopt;
     };
-    if (!url.isValid()) return fail(QStringLiteral("not a valid URL (%1)").arg(url.errorString()));
     if (!isServerStoreUrl(text)) return fail(QStringLiteral("not a postgresql:// URL"));
+    QString why;
+    const auto authority = parseUrlAuthority(text, &why);
+    if (!authority) return fail(why);
+    const QUrl url(text, QUrl::StrictMode);
+    if (!url.isValid()) return fail(QStringLiteral("not a valid URL (%1)").arg(qtUrlError(url)));
     ServerStoreUrl out;
     out.user = url.userName();
     out.password = url.password();
-    out.host = url.host();
-    out.port = url.port(5432);
+    out.host = authority->host;
+    out.port = authority->port.value_or(5432);
     out.database = url.path().mid(1);
-    if (out.host.isEmpty()) return fail(QStringLiteral("no server host"));
     if (out.database.isEmpty() || out.database.contains(QLatin1Char('/')))
         return fail(QStringLiteral("no database name after the host"));
     QStringList options;

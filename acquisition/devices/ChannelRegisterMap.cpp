@@ -89,6 +89,10 @@ public:
             !number(QStringLiteral("scale"), 1.0, &c->scale) ||
             !number(QStringLiteral("offset"), 0.0, &c->offset))
             return false;
+        QString why;
+        const auto to_celsius = conversionToDriftLabUnit(Quantity::Temperature, c->unit, &why);
+        if (!to_celsius) return fail(QStringLiteral("unit"), why);
+        c->to_celsius = *to_celsius;
         c->address = int(address);
         if (kind == QStringLiteral("holding"))
             c->kind = RegisterKind::Holding;
@@ -268,7 +272,7 @@ DecodedValue decodeChannel(const ChannelSpec& channel, std::span<const std::uint
         out.value = std::numeric_limits<double>::quiet_NaN();
         return out;
     }
-    out.value = raw * channel.scale + channel.offset;
+    out.value = channel.to_celsius.apply(raw * channel.scale + channel.offset);
     return out;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // A device's measuring channels as Modbus registers (docs/devices.md): where
 // each channel sits, how its words make a raw number, and how the raw number
-// becomes an engineering value (value = raw · scale + offset). Loading is
+// becomes an engineering value (value = raw · scale + offset, then into °C
+// from the unit the map declares: core/domain/Units.h). Loading is
 // strict: a map that would be read wrongly is refused with the key and the
 // channel named, because a mis-scaled temperature looks plausible.
 
@@ -11,6 +12,8 @@
 #include <optional>
 #include <span>
 #include <vector>
+
+#include "core/domain/Units.h"
 
 namespace driftlab::devices {
 
@@ -27,7 +30,10 @@ struct ChannelSpec {
     WordOrder word_order = WordOrder::HighFirst;
     double scale = 1.0;
     double offset = 0.0;
-    QString unit;
+    QString unit;  ///< as the map declares it
+    /// From `unit` to °C, applied after scale and offset: the module is read
+    /// for temperatures, which DriftLab logs in °C whatever the module gives.
+    UnitConversion to_celsius;
     /// Raw bit patterns (16 or 32 bits, unsigned) that mean "no value", e.g.
     /// 0x7FFF for an open sensor: decoded, they would be a believable number.
     std::vector<std::uint32_t> invalid_raw;
@@ -50,7 +56,7 @@ std::optional<ChannelRegisterMap> loadChannelRegisterMap(const QString& path, QS
 enum class DecodeStatus { Ok, InvalidRaw };
 
 struct DecodedValue {
-    double value = 0.0;  ///< engineering value; NaN unless status is Ok
+    double value = 0.0;  ///< engineering value in °C; NaN unless status is Ok
     DecodeStatus status = DecodeStatus::Ok;
     std::uint32_t raw = 0;  ///< the raw bit pattern (high word in bits 16–31)
 };

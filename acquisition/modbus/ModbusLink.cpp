@@ -54,6 +54,15 @@ bool ModbusLink::openContext(QString* error) {
 
 bool ModbusLink::connect(QString* error) {
     close();
+    if (!m_url.isRtu()) {
+        // libmodbus reports a name that does not resolve as "Connection
+        // refused", which sends the user looking for a server that is down.
+        if (const auto why = hostLookupError(m_url.host)) {
+            *error = QStringLiteral("%1: cannot connect: host '%2' could not be resolved (%3)")
+                         .arg(m_url.endpoint(), m_url.host, *why);
+            return false;
+        }
+    }
     if (!openContext(error)) return false;
     std::uint32_t seconds = 0, micro = 0;
     splitSeconds(m_timeout_s, &seconds, &micro);

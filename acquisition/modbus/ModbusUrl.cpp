@@ -1,7 +1,12 @@
 #include "acquisition/modbus/ModbusUrl.h"
 
+#include <netdb.h>
+#include <sys/socket.h>
+
 #include <QSet>
 #include <QUrl>
+
+#include "core/domain/ServerUrl.h"
 
 namespace driftlab::modbus {
 namespace {
@@ -14,17 +19,19 @@ std::optional<ModbusUrl> parseTcp(const QString& text, QString* error) {
         *error = QStringLiteral("'%1': %2 (expected modbus://HOST:PORT[/UNIT])").arg(text, why);
         return std::nullopt;
     };
+    QString why;
+    const auto authority = parseUrlAuthority(text, &why);
+    if (!authority) return fail(why);
     const QUrl url(text, QUrl::StrictMode);
-    if (!url.isValid()) return fail(url.errorString());
-    if (url.host().isEmpty()) return fail(QStringLiteral("no host"));
+    if (!url.isValid()) return fail(qtUrlError(url));
     if (!url.userInfo().isEmpty() || url.hasQuery() || url.hasFragment())
         return fail(QStringLiteral("user, query or fragment are not part of a Modbus address"));
     ModbusUrl result;
-    result.host = url.host();
+    result.host = authority->host;
     // Modbus TCP has a well-known port, but a forgotten port on a gateway that
     // serves several devices is a likelier mistake than a wish for 502.
-    if (url.port() <= 0) return fail(QStringLiteral("no port"));
-    result.port = url.port();
+    if (!authority->port) return fail(QStringLiteral("no port"));
+    result.port = *authority->port;
     QString path = url.path();
     if (path.endsWith(QLatin1Char('/'))) path.chop(1);
     if (!path.isEmpty()) {
@@ -132,6 +139,21 @@ QString ModbusUrl::endpoint() const {
     // An IPv6 literal needs its brackets back to be read as host:port.
     const QString shown = host.contains(QLatin1Char(':')) ? QStringLiteral("[%1]").arg(host) : host;
     return QStringLiteral("%1:%2").arg(shown).arg(port);
+}
+
+std::optional<QString> hostLookupError(const QString& host) {
+    // getaddrinfo as libmodbus's _pi functions call it, so that a host passes
+    // here exactly when libmodbus finds an address for it. (QHostInfo would
+    // need a QCoreApplication, which a library caller need not have.)
+    addrinfo hints{};
+    hints.ai_flags = AI_ADDRCONFIG;
+    hints.ai_family = AF_UNSPEC;
+    hints.ai_socktype = SOCK_STREAM;
+    addrinfo* found = nullptr;
+    const int rc = getaddrinfo(host.toUtf8().constData(), nullptr, &hints, &found);
+    if (found) freeaddrinfo(found);
+    if (rc == 0) return std::nullopt;
+    return QString::fromLocal8Bit(gai_strerror(rc));
 }
 
 std::optional<ModbusUrl> parseModbusUrl(const QString& text, QString* error) {

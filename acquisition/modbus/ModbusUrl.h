@@ -45,4 +45,9 @@ struct ModbusUrl {
 /// The URL, or nullopt with `error` naming the part of `text` that is wrong.
 std::optional<ModbusUrl> parseModbusUrl(const QString& text, QString* error);
 
+/// Why `host` (a name or an IPv4/IPv6 address) gives no address to connect to
+/// or listen on, as the system's resolver says it, or nothing. libmodbus does
+/// this lookup too but reports its failure as "Connection refused".
+std::optional<QString> hostLookupError(const QString& host);
+
 }  // namespace driftlab::modbus

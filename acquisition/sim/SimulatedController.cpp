@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cerrno>
 
+#include "acquisition/modbus/ModbusUrl.h"
+
 namespace driftlab::push {
 namespace {
 
@@ -29,8 +31,17 @@ SimulatedController::~SimulatedController() {
     closeAll();
 }
 
+std::optional<QString> unusableListenHost(const QString& host) {
+    // Looked up before libmodbus, whose IPv4-only server listened on
+    // 255.255.255.255 for a name it could not read as an address.
+    const auto why = modbus::hostLookupError(host);
+    if (!why) return std::nullopt;
+    return QStringLiteral("'%1' is neither an IP address nor a host name that resolves (%2)")
+        .arg(host, *why);
+}
+
 QString SimulatedController::url() const {
-    return QStringLiteral("modbus://%1:%2").arg(m_options.host).arg(m_port);
+    return modbus::ModbusUrl(m_options.host, m_port).toString();
 }
 
 bool SimulatedController::start(QString* error) {
@@ -39,8 +50,14 @@ bool SimulatedController::start(QString* error) {
             QStringLiteral("capacity %1 is not 2 to %2").arg(m_options.capacity).arg(kMaxCapacity);
         return false;
     }
+    if (const auto why = unusableListenHost(m_options.host)) {
+        *error = QStringLiteral("cannot listen on %1").arg(*why);
+        return false;
+    }
+    // The _pi variant listens on IPv6 as well as IPv4 (modbus_new_tcp takes IPv4 only).
     const QByteArray host = m_options.host.toUtf8();
-    m_context = modbus_new_tcp(host.constData(), m_options.port);
+    const QByteArray service = QByteArray::number(m_options.port);
+    m_context = modbus_new_tcp_pi(host.constData(), service.constData());
     m_mapping =
         modbus_mapping_new_start_address(0, 0, 0, 0, 0, ControllerRegisters::kRegisterCount, 0, 0);
     if (!m_context || !m_mapping) {
@@ -48,17 +65,19 @@ bool SimulatedController::start(QString* error) {
         closeAll();
         return false;
     }
-    m_listen = modbus_tcp_listen(m_context, 8);
+    m_listen = modbus_tcp_pi_listen(m_context, 8);
     if (m_listen == -1) {
-        *error = systemError(
-            QStringLiteral("%1:%2: cannot listen").arg(m_options.host).arg(m_options.port));
+        *error =
+            systemError(QStringLiteral("%1: cannot listen")
+                            .arg(modbus::ModbusUrl(m_options.host, m_options.port).endpoint()));
         closeAll();
         return false;
     }
-    sockaddr_in bound{};
+    sockaddr_storage bound{};
     socklen_t length = sizeof bound;
     getsockname(m_listen, reinterpret_cast<sockaddr*>(&bound), &length);
-    m_port = ntohs(bound.sin_port);
+    m_port = bound.ss_family == AF_INET6 ? ntohs(reinterpret_cast<sockaddr_in6*>(&bound)->sin6_port)
+                                         : ntohs(reinterpret_cast<sockaddr_in*>(&bound)->sin_port);
     m_registers = std::make_unique<ControllerRegisters>(
         m_mapping->tab_registers, m_options.capacity, m_options.state, m_options.faults);
     m_registers->setAxisState(m_options.axis);
@@ -101,7 +120,7 @@ void SimulatedController::serve() {
             if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) handle(fds[i].fd, clients);
         if (fds[0].revents & POLLIN) {
             int listen = m_listen;
-            const int client = modbus_tcp_accept(m_context, &listen);
+            const int client = modbus_tcp_pi_accept(m_context, &listen);
             if (client != -1) clients.push_back(client);
         }
     }

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -20,13 +21,17 @@ struct _modbus_mapping_t;
 namespace driftlab::push {
 
 struct SimulatedControllerOptions {
-    QString host = QStringLiteral("127.0.0.1");
+    QString host = QStringLiteral("127.0.0.1");  ///< an IPv4 or IPv6 address, or a host name
     int port = 0;  ///< 0: a free port chosen by the system (see port())
     int capacity = kMaxCapacity;
     MachineState state = MachineState::Idle;
     devices::AxisState axis;  ///< served until setAxisState()
     ControllerFaults faults;
 };
+
+/// Why the controller cannot listen on `host` (neither an IP address nor a
+/// name that resolves), or nothing.
+std::optional<QString> unusableListenHost(const QString& host);
 
 class SimulatedController {
 public:
@@ -42,7 +47,7 @@ public:
     void stop();
     /// The port it listens on, once started.
     int port() const { return m_port; }
-    /// modbus://host:port
+    /// modbus://host:port, an IPv6 address in brackets (parseModbusUrl reads it back).
     QString url() const;
 
     // Thread-safe views and controls for tests and the CLI.

@@ -13,6 +13,7 @@
 #include "core/bundle/BundleReader.h"
 #include "core/iso/PositioningRuns.h"
 #include "db/CampaignStore.h"
+#include "db/StoreBackend.h"
 #include "db/ZipBundleSource.h"
 
 namespace driftlab::cli {
@@ -74,6 +75,15 @@ void parseArguments(QCommandLineParser& parser, const QStringList& args,
     for (const QCommandLineOption& option : arguments.required)
         if (!parser.isSet(option))
             throw CliError(QStringLiteral("%1 is required").arg(optionSyntax(option)), 2);
+    // A server store's URL is read here, for every option that takes one, so
+    // that a bad one is a usage error naming the option before anything runs.
+    for (const QCommandLineOption& option : options) {
+        for (const QString& value : parser.values(option)) {
+            QString why;
+            if (db::isServerStoreUrl(value) && !db::parseServerStoreUrl(value, &why))
+                throw CliError(QStringLiteral("--%1: %2").arg(option.names().constLast(), why), 2);
+        }
+    }
 }
 
 QString bundleDescription() {

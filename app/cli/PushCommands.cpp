@@ -64,7 +64,8 @@ devices::AxisState axisState(const QString& text) {
 int controllerSimCommand(const QStringList& args) {
     QCommandLineParser parser;
     const QCommandLineOption host{QStringLiteral("host"),
-                                  QStringLiteral("IPv4 address to listen on (default 127.0.0.1)."),
+                                  QStringLiteral("IPv4 or IPv6 address, or host name, to listen "
+                                                 "on (default 127.0.0.1)."),
                                   QStringLiteral("ADDRESS"), QStringLiteral("127.0.0.1")};
     const QCommandLineOption port{QStringLiteral("port"),
                                   QStringLiteral("TCP port (default 0: a free one, printed)."),
@@ -90,6 +91,8 @@ int controllerSimCommand(const QStringList& args) {
     parseArguments(parser, args, {host, port, capacity, state, fault, axis});
     push::SimulatedControllerOptions options;
     options.host = parser.value(host);
+    if (const auto why = push::unusableListenHost(options.host))
+        throw CliError(QStringLiteral("--host: ") + *why, 2);
     bool ok = false;
     options.port = parser.value(port).toInt(&ok);
     if (!ok || options.port < 0 || options.port > 65535)

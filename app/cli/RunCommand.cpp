@@ -82,7 +82,6 @@ int runCommand(const QStringList& args) {
     std::unique_ptr<logging::SpoolUploader> uploader;
     QString spoolId;
     if (!serverUrl.isEmpty()) {
-        if (!db::parseServerStoreUrl(serverUrl, &error)) throw CliError(error, 2);
         options.store_path = spoolPath(parser, spool);
         spoolId = prepareSpool(options.store_path);
         uploader = std::make_unique<logging::SpoolUploader>(

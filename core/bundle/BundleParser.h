@@ -13,6 +13,7 @@
 
 #include "core/bundle/BundleReader.h"
 #include "core/bundle/CsvTable.h"
+#include "core/domain/Units.h"
 
 namespace driftlab::bundle_files {
 inline const QString kCampaign = QStringLiteral("campaign.json");
@@ -54,7 +55,7 @@ private:
     void setPositionLimits();
     void checkPosition(const CsvTable& csv, int column, double position_mm, Overrun& overrun);
     void warnOverrun(const QString& file, const Overrun& overrun);
-    const Channel* sampleChannel(const CsvTable& csv, int column) const;
+    const Channel* sampleChannel(const CsvTable& csv, int column, UnitConversion* unit) const;
     static QString axisColumnOf(const QString& header);
     void check(const CsvTable& csv, int column, const std::optional<QString>& why);
     std::vector<int> formatColumns(const CsvTable& csv, const QStringList& expected);

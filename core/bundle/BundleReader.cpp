@@ -107,9 +107,11 @@ void BundleParser::warnOverrun(const QString& file, const Overrun& overrun) {
 }
 
 /// The declared channel of a samples.csv column, also under a header giving its unit
-/// ("T_nut [°C]", checked); nullptr for an axis column (also spelled "Position [mm]");
-/// throws for anything else.
-const Channel* BundleParser::sampleChannel(const CsvTable& csv, int column) const {
+/// ("T_nut [°C]", "T_nut [°F]": `unit` converts its values); nullptr for an axis column
+/// (also spelled "Position [mm]"); throws for anything else.
+const Channel* BundleParser::sampleChannel(const CsvTable& csv, int column,
+                                           UnitConversion* unit) const {
+    *unit = {};
     const QString& header = csv.header()[std::size_t(column)];
     if (const Channel* channel = m_campaign.findChannel(header)) return channel;
     if (!axisColumnOf(header).isEmpty()) return nullptr;
@@ -119,9 +121,12 @@ const Channel* BundleParser::sampleChannel(const CsvTable& csv, int column) cons
         throw BundleException(
             {kSamples, 1, column + 1,
              QStringLiteral("column '%1' is not a channel declared in %2").arg(header, kCampaign)});
-    if (const auto why = wrongUnit(channel->quantity, withUnit->unit))
+    QString why;
+    const auto conversion = conversionToDriftLabUnit(channel->quantity, withUnit->unit, &why);
+    if (!conversion)
         throw BundleException(
-            {kSamples, 1, column + 1, QStringLiteral("column '%1': %2").arg(header, *why)});
+            {kSamples, 1, column + 1, QStringLiteral("column '%1': %2").arg(header, why)});
+    *unit = *conversion;
     return channel;
 }
 
@@ -149,9 +154,14 @@ void BundleParser::readSamples() {
     const int timeCol = csv.requireColumn(QStringLiteral("time_s"));
     std::vector<int> dataCols;
     std::vector<const Channel*> channels;  // nullptr for axis columns
+    std::vector<UnitConversion> units;     // a channel's values into DriftLab's unit
     for (std::size_t i = 0; i < csv.header().size(); ++i) {
         if (int(i) == runCol || int(i) == timeCol) continue;
-        const Channel* channel = sampleChannel(csv, int(i));
+        UnitConversion unit;
+        const Channel* channel = sampleChannel(csv, int(i), &unit);
+        if (!unit.isIdentity())
+            warnings << QStringLiteral("%1: column '%2': read in %3, converted to %4")
+                            .arg(kSamples, csv.header()[i], unit.from, unitOf(channel->quantity));
         const QString name = channel ? channel->id : axisColumnOf(csv.header()[i]);
         const auto& columns = m_campaign.sample_columns;
         if (std::find(columns.begin(), columns.end(), name) != columns.end())
@@ -160,6 +170,7 @@ void BundleParser::readSamples() {
                  QStringLiteral("column '%1' is channel '%2' again").arg(csv.header()[i], name)});
         dataCols.push_back(int(i));
         channels.push_back(channel);
+        units.push_back(unit);
         m_campaign.sample_columns.push_back(name);
     }
     const int positionCol = csv.column(kPositionColumn);
@@ -211,7 +222,9 @@ void BundleParser::readSamples() {
         bool anyValue = false;
         for (std::size_t k = 0; k < dataCols.size(); ++k) {
             const int column = dataCols[k];
-            const double v = row[k] = csv.numberOrMissing(column);
+            double v = csv.numberOrMissing(column);
+            if (!std::isnan(v) && !units[k].isIdentity()) v = units[k].apply(v);
+            row[k] = v;
             if (std::isnan(v)) continue;
             anyValue = true;
             if (const Channel* channel = channels[k]) {

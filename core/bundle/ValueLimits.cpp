@@ -123,30 +123,4 @@ std::optional<HeaderWithUnit> splitHeaderUnit(const QString& header) {
     return HeaderWithUnit{m.captured(1), m.hasCaptured(2) ? m.captured(2) : m.captured(3)};
 }
 
-std::optional<QString> wrongUnit(Quantity quantity, const QString& unit) {
-    // The spellings loggers use: the micro sign and the Greek mu, "deg C" …
-    QString u = unit;
-    u.remove(QLatin1Char(' ')).replace(QChar(0x03BC), QChar(0x00B5));
-    QStringList spellings;
-    switch (quantity) {
-        case Quantity::Temperature:
-            spellings = {QStringLiteral("°C"), QStringLiteral("degC"), QStringLiteral("C"),
-                         QStringLiteral("℃"), QStringLiteral("celsius")};
-            break;
-        case Quantity::Displacement:
-            spellings = {QStringLiteral("µm"), QStringLiteral("um"), QStringLiteral("micron"),
-                         QStringLiteral("microns")};
-            break;
-        case Quantity::Speed:
-            spellings = {QStringLiteral("rpm"), QStringLiteral("1/min"), QStringLiteral("min^-1"),
-                         QStringLiteral("min-1"), QStringLiteral("U/min")};
-            break;
-    }
-    if (spellings.contains(u, Qt::CaseInsensitive)) return std::nullopt;
-    return QStringLiteral(
-               "the header gives its unit as '%1', but a %2 channel is read in %3 "
-               "(a unit mix-up? convert the column, or name it without a unit)")
-        .arg(unit, toString(quantity), unitOf(quantity));
-}
-
 }  // namespace driftlab

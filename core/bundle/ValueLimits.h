@@ -43,8 +43,5 @@ struct HeaderWithUnit {
 };
 /// The id and the unit of such a header, or nothing when it names none.
 std::optional<HeaderWithUnit> splitHeaderUnit(const QString& header);
-/// Why `unit` is not the unit of `quantity` in a bundle (°C, µm, rpm; a unit
-/// mix-up, named), or nothing when it is one of its spellings.
-std::optional<QString> wrongUnit(Quantity quantity, const QString& unit);
 
 }  // namespace driftlab

@@ -3,6 +3,8 @@
 // and how channels are grouped into requests.
 #include <gtest/gtest.h>
 
+#include <QFile>
+#include <QTemporaryDir>
 #include <cmath>
 
 #include "acquisition/devices/ChannelRegisterMap.h"
@@ -164,6 +166,42 @@ TEST(ChannelMapLoading, errorsNameTheKeyAndTheChannel) {
     const QString unnamed = errorFor(R"({"address": 1, "kind": "input", "type": "int16"})");
     EXPECT_TRUE(unnamed.contains(QStringLiteral("channel 2: key \"id\": missing")))
         << qPrintable(unnamed);
+}
+
+TEST(ChannelMapLoading, fahrenheitAndKelvinChannelsDecodeToCelsius) {
+    QString error;
+    const auto map = parseChannelRegisterMap(R"({"channels": [
+        {"id": "f", "address": 0, "kind": "input", "type": "int16", "scale": 0.1, "unit": "°F"},
+        {"id": "k", "address": 1, "kind": "input", "type": "int16", "scale": 0.1,
+         "offset": 273.15, "unit": "K"},
+        {"id": "c", "address": 2, "kind": "input", "type": "int16", "scale": 0.1, "unit": "degC"}
+    ]})",
+                                             &error);
+    ASSERT_TRUE(map) << qPrintable(error);
+    EXPECT_EQ(map->channels[0].unit, QStringLiteral("°F"));  // kept as declared
+    // 0x02A8 = 680 counts = 68.0 °F = 20 °C; 0x00D7 = 215 counts = 294.65 K or
+    // 21.5 °C. The conversion is exact: (°F − 32) · 5 / 9 and K − 273.15, after
+    // scale and offset.
+    EXPECT_EQ(decode(map->channels[0], {0x02A8}), (680 * 0.1 - 32.0) * 5.0 / 9.0);
+    EXPECT_NEAR(decode(map->channels[0], {0x02A8}), 20.0, 1e-12);
+    EXPECT_EQ(decode(map->channels[1], {0x00D7}), (215 * 0.1 + 273.15) - 273.15);
+    EXPECT_EQ(decode(map->channels[2], {0x00D7}), 215 * 0.1);
+}
+
+TEST(ChannelMapLoading, aUnitThatIsNoTemperatureIsRefusedNamingFileChannelAndUnit) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("module.json"));
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(R"({"channels": [
+        {"id": "T1", "address": 0, "kind": "input", "type": "int16", "unit": "°C"},
+        {"id": "T2", "address": 1, "kind": "input", "type": "int16", "unit": "mV"}]})");
+    file.close();
+    QString error;
+    EXPECT_FALSE(loadChannelRegisterMap(path, &error));
+    EXPECT_EQ(error,
+              path + QStringLiteral(": channel 2 (\"T2\"): key \"unit\": 'mV' is not a unit "
+                                    "DriftLab reads for a temperature channel (°C, °F or K)"));
 }
 
 TEST(ReadPlanning, contiguousChannelsShareRequestsOfAtMost125Registers) {

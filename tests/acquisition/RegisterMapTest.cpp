@@ -114,3 +114,29 @@ TEST(ModbusUrl, hostPortAndUnitAreParsedAndMistakesNamed) {
     EXPECT_FALSE(modbus::parseModbusUrl(QStringLiteral("modbus://plc:502/300"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("unit '300'"))) << qPrintable(error);
 }
+
+TEST(ModbusUrl, aBadPortOrHostIsNamedAndAnIpv6AddressComesBackInBrackets) {
+    const auto refused = [](const char* text) {
+        QString error;
+        EXPECT_FALSE(modbus::parseModbusUrl(QString::fromUtf8(text), &error)) << text;
+        return error;
+    };
+    EXPECT_EQ(refused("modbus://127.0.0.1:70000"),
+              QStringLiteral("'modbus://127.0.0.1:70000': port '70000' is not a number from 1 to "
+                             "65535 (expected modbus://HOST:PORT[/UNIT])"));
+    EXPECT_EQ(refused("modbus://127.0.0.1:abc"),
+              QStringLiteral("'modbus://127.0.0.1:abc': port 'abc' is not a number from 1 to "
+                             "65535 (expected modbus://HOST:PORT[/UNIT])"));
+    EXPECT_TRUE(refused("modbus://127.0.0.1:0").contains(QStringLiteral("port '0' is not")));
+    EXPECT_TRUE(refused("modbus://::1:502")
+                    .contains(QStringLiteral("an IPv6 address goes in brackets, e.g. [::1]:502")));
+    EXPECT_TRUE(
+        refused("modbus://pl c:502")
+            .contains(QStringLiteral("host 'pl c' is neither a host name nor an IP address")));
+    QString error;
+    const auto v6 = modbus::parseModbusUrl(QStringLiteral("modbus://[::1]:1502"), &error);
+    ASSERT_TRUE(v6) << qPrintable(error);
+    EXPECT_EQ(v6->host, QStringLiteral("::1"));
+    EXPECT_EQ(v6->port, 1502);
+    EXPECT_EQ(v6->toString(), QStringLiteral("modbus://[::1]:1502"));
+}

@@ -49,6 +49,33 @@ TEST(TemperatureModulePeer, profileChannelsReadInOneRequestWithScaleAndOpenShort
     peer->waitForFinished();
 }
 
+TEST(TemperatureModulePeer, channelsDeclaredInFahrenheitAndKelvinAreReadInCelsius) {
+    if (const QString why = test::peerUnavailable(); !why.isEmpty())
+        GTEST_SKIP() << qPrintable(why);
+    int port = 0;
+    auto peer = test::startTemperaturePeer(0, &port);
+    ASSERT_GT(port, 0);
+    // The peer's registers 0 and 1 hold 215 and −123 counts: read here as a
+    // module that gives °F, and one that gives K (offset 273.15).
+    QString error;
+    const auto map = parseChannelRegisterMap(R"({"channels": [
+        {"id": "f", "address": 0, "kind": "input", "type": "int16", "scale": 0.1, "unit": "°F"},
+        {"id": "k", "address": 1, "kind": "input", "type": "int16", "scale": 0.1,
+         "offset": 273.15, "unit": "K"}]})",
+                                             &error);
+    ASSERT_TRUE(map) << qPrintable(error);
+    TemperatureModule module(*map, test::localPeer(port));
+    ASSERT_TRUE(module.connect(&error)) << qPrintable(error);
+    const auto reading = module.read(&error);
+    ASSERT_TRUE(reading) << qPrintable(error);
+    ASSERT_EQ(reading->values.size(), 2u);
+    EXPECT_EQ(reading->values[0], (215 * 0.1 - 32.0) * 5.0 / 9.0);
+    EXPECT_EQ(reading->values[1], (-123 * 0.1 + 273.15) - 273.15);
+    EXPECT_NEAR(reading->values[1], -12.3, 1e-9);
+    peer->kill();
+    peer->waitForFinished();
+}
+
 TEST(TemperatureModulePeer, thirtyTwoBitValuesInBothWordOrdersMatchThePeer) {
     if (const QString why = test::peerUnavailable(); !why.isEmpty())
         GTEST_SKIP() << qPrintable(why);
@@ -56,12 +83,13 @@ TEST(TemperatureModulePeer, thirtyTwoBitValuesInBothWordOrdersMatchThePeer) {
     auto peer = test::startTemperaturePeer(0, &port);
     ASSERT_GT(port, 0);
     QString error;
+    // Every channel in °C: the types and word orders are under test, not the unit.
     const auto map = parseChannelRegisterMap(R"({"channels": [
         {"id": "f_hi", "address": 100, "kind": "holding", "type": "float32", "word_order": "high-first", "unit": "°C"},
         {"id": "f_lo", "address": 102, "kind": "holding", "type": "float32", "word_order": "low-first", "unit": "°C"},
-        {"id": "i32", "address": 104, "kind": "holding", "type": "int32", "word_order": "high-first", "unit": "mK", "scale": 0.001},
-        {"id": "u32", "address": 106, "kind": "holding", "type": "uint32", "word_order": "low-first", "unit": "count"},
-        {"id": "u16", "address": 108, "kind": "holding", "type": "uint16", "unit": "K", "scale": 0.01, "offset": -273.15}
+        {"id": "i32", "address": 104, "kind": "holding", "type": "int32", "word_order": "high-first", "unit": "°C", "scale": 0.001},
+        {"id": "u32", "address": 106, "kind": "holding", "type": "uint32", "word_order": "low-first", "unit": "°C"},
+        {"id": "u16", "address": 108, "kind": "holding", "type": "uint16", "unit": "°C", "scale": 0.01, "offset": -273.15}
     ]})",
                                              &error);
     ASSERT_TRUE(map) << qPrintable(error);

@@ -295,3 +295,49 @@ TEST(RunDeviceCli, interferometerDroppedMidRunIsOneErrorOneGapAndMatchingGoesOn)
     // The new stream has the same air: the correction is not logged again.
     EXPECT_EQ(countPrefix(events, "info " + source + ": environment correction:"), 1) << log;
 }
+
+TEST(RunDeviceCli, aModuleGivingFahrenheitAndKelvinIsLoggedInCelsius) {
+    if (const QString why = peerUnavailable(); !why.isEmpty()) GTEST_SKIP() << why.toStdString();
+    int port = 0;
+    auto module = startTemperaturePeer(0, &port);
+    ASSERT_GT(port, 0);
+    QTemporaryDir dir;
+    // The peer's registers 0 and 1 (215 and −123 counts) as a module in °F and one in K.
+    const QString map = dir.filePath(QStringLiteral("module.json"));
+    QFile mapFile(map);
+    ASSERT_TRUE(mapFile.open(QIODevice::WriteOnly));
+    mapFile.write(R"({"channels": [
+        {"id": "T1", "address": 0, "kind": "input", "type": "int16", "scale": 0.1, "unit": "°F"},
+        {"id": "T2", "address": 1, "kind": "input", "type": "int16", "scale": 0.1,
+         "offset": 273.15, "unit": "K"}]})");
+    mapFile.close();
+    const QString procedure = dir.filePath(QStringLiteral("etve.json"));
+    QFile procedureFile(procedure);
+    ASSERT_TRUE(procedureFile.open(QIODevice::WriteOnly));
+    procedureFile.write(R"({"format": "driftlab.procedure/1", "name": "ETVE in °F",
+        "kind": "etve", "sample_interval_s": 0.5, "etve": {"run_id": "E1", "duration_s": 3}})");
+    procedureFile.close();
+    const QString db = dir.filePath(QStringLiteral("bench.sqlite"));
+    const CliResult r = runCli({"run", "--procedure", procedure, "--db", db, "--rig",
+                                QStringLiteral("modbus://127.0.0.1:%1").arg(port), "--device-map",
+                                map, "--poll-interval-s", "0.2"});
+    killPeer(*module);
+    ASSERT_EQ(r.exitCode, 0) << r.err.constData();
+
+    QString error;
+    auto store = db::CampaignStore::open(db, db::StoreAccess::ReadOnly, &error);
+    ASSERT_TRUE(store) << error.toStdString();
+    const auto campaign = store->loadCampaign(r.out.trimmed().toLongLong(), &error);
+    ASSERT_TRUE(campaign) << error.toStdString();
+    const SampleSeries& s = campaign->runs.front().samples;
+    const auto& t1 = s.values[std::size_t(s.columnIndex("T1"))];
+    const auto& t2 = s.values[std::size_t(s.columnIndex("T2"))];
+    int logged = 0;
+    for (std::size_t row = 0; row < s.rowCount(); ++row) {
+        if (std::isnan(t1[row])) continue;  // before the first poll
+        ++logged;
+        EXPECT_EQ(t1[row], (215 * 0.1 - 32.0) * 5.0 / 9.0) << "row " << row;  // −5.83 °C
+        EXPECT_EQ(t2[row], (-123 * 0.1 + 273.15) - 273.15) << "row " << row;  // −12.3 °C
+    }
+    EXPECT_GE(logged, 3);
+}

@@ -115,13 +115,14 @@ const std::vector<BadBundleCase>& badBundleCases() {
          },
          "samples.csv:5:3",
          "column 'T_nut' reads 20.12 at 20 s of run 'S1', but 20.08 on line 4 at the same time"},
-        {"fahrenheit_in_header",
+        // °F and K are converted (BundleReader test); a raw thermocouple voltage is not.
+        {"unit_of_no_temperature_in_header",
          [=](const QString& d) {
-             replaceInFile(file(d, "samples.csv"), "run,time_s,T_nut,", "run,time_s,T_nut [°F],");
+             replaceInFile(file(d, "samples.csv"), "run,time_s,T_nut,", "run,time_s,T_nut [mV],");
          },
          "samples.csv:1:3",
-         "column 'T_nut [°F]': the header gives its unit as '°F', but a temperature channel is "
-         "read in °C"},
+         "column 'T_nut [mV]': 'mV' is not a unit DriftLab reads for a temperature channel "
+         "(°C, °F or K)"},
         {"channel_twice_in_header",
          [=](const QString& d) {
              replaceInFile(file(d, "samples.csv"), "T_air,T_bed", "T_air,T_air (degC)");

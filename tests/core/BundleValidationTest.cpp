@@ -2,6 +2,7 @@
 // line and column, and returns no campaign (issue #2).
 #include <gtest/gtest.h>
 #include <QTemporaryDir>
+#include <cmath>
 
 #include "core/bundle/BundleReader.h"
 #include "tests/core/BadBundleCases.h"
@@ -56,6 +57,42 @@ TEST(BundleReader, expansionCoefficientInPpmIsAUnitMixUp) {
     EXPECT_TRUE(result.error->toString().startsWith(
         QStringLiteral("campaign.json: screw.alpha_per_K: 11.5 per K")))
         << qPrintable(result.error->toString());
+}
+
+TEST(BundleReader, aColumnInFahrenheitOrKelvinIsReadInCelsius) {
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    const QString samples = dir.filePath(QStringLiteral("samples.csv"));
+    rewriteColumn(samples, 2,  // T_nut
+                  [](double c) { return QByteArray::number(c * 9 / 5 + 32, 'g', 17); });
+    rewriteColumn(samples, 3,  // T_bearing_fixed
+                  [](double c) { return QByteArray::number(c + 273.15, 'g', 17); });
+    replaceInFile(samples, "run,time_s,T_nut,T_bearing_fixed,",
+                  "run,time_s,T_nut [°F],T_bearing_fixed (K),");
+    const BundleReadResult converted = readBundle(dir.path());
+    ASSERT_TRUE(converted.ok()) << qPrintable(converted.error->toString());
+    const BundleReadResult plain = readBundle(exampleBundlePath());
+    ASSERT_TRUE(plain.ok());
+    for (const char* id : {"T_nut", "T_bearing_fixed"}) {
+        const SampleSeries& want = plain.campaign->runs.front().samples;
+        const SampleSeries& got = converted.campaign->runs.front().samples;
+        const auto& w = want.values[std::size_t(want.columnIndex(QString::fromLatin1(id)))];
+        const auto& g = got.values[std::size_t(got.columnIndex(QString::fromLatin1(id)))];
+        ASSERT_EQ(g.size(), w.size()) << id;
+        for (std::size_t r = 0; r < w.size(); ++r) {
+            EXPECT_EQ(std::isnan(g[r]), std::isnan(w[r])) << id << " row " << r;
+            if (!std::isnan(w[r])) {
+                EXPECT_NEAR(g[r], w[r], 1e-9) << id << " row " << r;
+            }
+        }
+    }
+    const QString warnings = converted.warnings.join(QLatin1Char('\n'));
+    EXPECT_TRUE(warnings.contains(
+        QStringLiteral("samples.csv: column 'T_nut [°F]': read in °F, converted to °C")))
+        << qPrintable(warnings);
+    EXPECT_TRUE(warnings.contains(
+        QStringLiteral("samples.csv: column 'T_bearing_fixed (K)': read in K, converted to °C")))
+        << qPrintable(warnings);
 }
 
 TEST(BundleReader, deviationsInMillimetresAreReadWithAWarning) {
