@@ -3,6 +3,7 @@
 #include <QJsonArray>
 #include <QSet>
 
+#include "core/domain/MessageText.h"
 #include "core/procedures/ProcedureJsonReader.h"
 #include "core/procedures/ProcedureLimits.h"
 #include "core/rig/MovingStateProgramme.h"
