@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/domain/JsonDuplicateKeys.h"
+
 namespace driftlab::devices {
 namespace {
 
@@ -170,6 +172,10 @@ std::optional<ChannelRegisterMap> parseChannelRegisterMap(const QByteArray& json
     }
     if (!doc.isObject()) {
         *error = QStringLiteral("expected a JSON object with \"channels\"");
+        return std::nullopt;
+    }
+    if (const auto duplicate = findDuplicateJsonKey(json, QStringLiteral("map"))) {
+        *error = duplicate->toString();
         return std::nullopt;
     }
     const QJsonObject top = doc.object();

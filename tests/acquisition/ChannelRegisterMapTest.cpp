@@ -166,6 +166,13 @@ TEST(ChannelMapLoading, errorsNameTheKeyAndTheChannel) {
     const QString unnamed = errorFor(R"({"address": 1, "kind": "input", "type": "int16"})");
     EXPECT_TRUE(unnamed.contains(QStringLiteral("channel 2: key \"id\": missing")))
         << qPrintable(unnamed);
+    // A key named twice: the parser would keep the last one without a word.
+    const QString twice = errorFor(
+        "{\"id\": \"b\", \"address\": 1, \"kind\": \"input\", \"type\": \"int16\",\n"
+        " \"unit\": \"°C\", \"scale\": 0.1,\n \"scale\": 10}");
+    EXPECT_TRUE(twice.endsWith(QStringLiteral(
+        "map.channels[1].scale: named twice in one object (lines 3 and 4); only one may stand")))
+        << qPrintable(twice);
 }
 
 TEST(ChannelMapLoading, fahrenheitAndKelvinChannelsDecodeToCelsius) {
