@@ -12,6 +12,7 @@
 #include <QTemporaryFile>
 #include <utility>
 
+#include "core/bundle/RegularFile.h"
 #include "db/SchemaMigrations.h"
 #include "db/SqlValues.h"
 #include "db/SqliteStatement.h"
@@ -125,6 +126,9 @@ std::unique_ptr<CampaignStore> CampaignStore::open(const QString& path, StoreAcc
     StoreFileInfo info;
     QString why;
     if (file.isDir()) return fail(QStringLiteral("a folder, not a DriftLab store"));
+    // Inspecting a FIFO would wait for its writer; a device is no database.
+    if (const QString kind = irregularFileKind(path); !kind.isEmpty())
+        return fail(kind + QStringLiteral(", not a DriftLab store"));
     if (!file.exists()) {
         if (access != StoreAccess::CreateIfMissing)
             return fail(QStringLiteral("no such DriftLab store"));

@@ -12,9 +12,11 @@ namespace {
 
 const QStringList kAnalyses{kAnalysisInfo, kAnalysisIso230_2, kAnalysisFit, kAnalysisDiagnose};
 
+/// A folder with a campaign.json of any kind: one that is not a regular file
+/// (a FIFO) is the bundle reader's to refuse, with its reason.
 bool isBundleFolder(const QFileInfo& info) {
     return info.isDir() &&
-           QFileInfo(QDir(info.filePath()), QStringLiteral("campaign.json")).isFile();
+           QFileInfo::exists(QDir(info.filePath()).filePath(QStringLiteral("campaign.json")));
 }
 
 bool isZip(const QFileInfo& info) {

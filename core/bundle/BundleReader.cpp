@@ -21,10 +21,15 @@ using namespace bundle_files;
 Campaign BundleParser::parse() {
     QString error;
     auto json = m_source.open(kCampaign, &error);
+    // A campaign.json that is there but cannot be read (a FIFO) is named as such;
+    // without one, the folder may be something else than a bundle.
     if (!json)
         throw BundleException(
             {kCampaign, 0, 0,
-             QStringLiteral("cannot open: %1 (is this a campaign bundle?)").arg(error)});
+             QStringLiteral("cannot open: %1%2")
+                 .arg(error, m_source.contains(kCampaign)
+                                 ? QString()
+                                 : QStringLiteral(" (is this a campaign bundle?)"))});
     m_campaign = campaignFromJson(json->readAll(), kCampaign);
     for (std::size_t i = 0; i < m_campaign.runs.size(); ++i)
         m_runIndex.insert(m_campaign.runs[i].id, int(i));

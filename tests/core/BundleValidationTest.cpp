@@ -1,7 +1,12 @@
 // Every bad-input class of the bundle format gives an error naming file,
 // line and column, and returns no campaign (issue #2).
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <QTemporaryDir>
+#include <chrono>
+#include <future>
 
 #include "core/bundle/BundleReader.h"
 #include "tests/core/BadBundleCases.h"
@@ -34,6 +39,28 @@ TEST(BundleReader, missingFolderIsNamed) {
     ASSERT_TRUE(result.error);
     EXPECT_EQ(result.error->toString(),
               QStringLiteral("/nonexistent/bundle: no such bundle folder or archive"));
+}
+
+TEST(BundleReader, aFifoInTheBundleIsRefusedWithoutWaitingForAWriter) {
+    for (const char* name : {"campaign.json", "samples.csv", "positioning.csv", "motion.csv"}) {
+        QTemporaryDir dir;
+        copyBundle(exampleBundlePath(), dir.path());
+        const QByteArray fifo = QFile::encodeName(dir.filePath(QLatin1String(name)));
+        ASSERT_EQ(unlink(fifo.constData()), 0);
+        ASSERT_EQ(mkfifo(fifo.constData(), 0644), 0);
+        auto read = std::async(std::launch::async, [&] { return readBundle(dir.path()); });
+        if (read.wait_for(std::chrono::seconds(20)) != std::future_status::ready) {
+            // A writer that closes at once ends the reader's wait, so the test can end.
+            const int fd = open(fifo.constData(), O_WRONLY | O_NONBLOCK);
+            if (fd >= 0) close(fd);
+            ADD_FAILURE() << "the reader waited for a writer on " << name;
+        }
+        const BundleReadResult result = read.get();
+        ASSERT_TRUE(result.error) << name;
+        EXPECT_EQ(result.error->toString(),
+                  QLatin1String(name) +
+                      QStringLiteral(": cannot open: a FIFO (named pipe), not a regular file"));
+    }
 }
 
 TEST(BundleReader, feedAxisRunWithoutScrewIsRejected) {

@@ -1,0 +1,125 @@
+// Inputs driftlab-cli must refuse by name and with the reason, leaving the
+// store as it was: bundle files that are not regular files. Each case runs the
+// real CLI on real files and checks the exit code, the one-line reason and the
+// store.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+#include "tests/cli/CliRunner.h"
+#include "tests/core/BundleTestSupport.h"
+
+using namespace driftlab;
+using namespace driftlab::test;
+
+namespace {
+
+/// A store holding the example campaign, and its bytes before the command under test.
+struct StoreWithCampaign {
+    explicit StoreWithCampaign(const QTemporaryDir& dir)
+        : path(dir.filePath(QStringLiteral("lab.sqlite"))) {
+        const CliResult r =
+            runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), path});
+        EXPECT_EQ(r.exitCode, 0) << r.err.constData();
+        sha256 = sha256OfFile(path);
+    }
+    QString path;
+    QByteArray sha256;
+};
+
+/// Replaces `path` by a FIFO: opening it for reading waits for a writer that never comes.
+void makeFifo(const QString& path) {
+    QFile::remove(path);
+    ASSERT_EQ(mkfifo(QFile::encodeName(path).constData(), 0644), 0) << qPrintable(path);
+}
+
+QByteArray expected(const char* command, const QString& path, const char* why) {
+    return QStringLiteral("driftlab-cli %1: %2: %3")
+        .arg(QLatin1String(command), path, QLatin1String(why))
+        .toUtf8();
+}
+
+/// The one JSON line of a batch of one item.
+QJsonObject batchLine(const CliResult& r) {
+    return QJsonDocument::fromJson(r.out.trimmed()).object();
+}
+
+}  // namespace
+
+class FifoInBundle : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FifoInBundle, infoImportAndBatchRefuseItByNameWithoutWaiting) {
+    QTemporaryDir dir;
+    const StoreWithCampaign store(dir);
+    const QString bundle = dir.filePath(QStringLiteral("bundle"));
+    copyBundle(exampleBundlePath(), bundle);
+    const QString fifo = QDir(bundle).filePath(QLatin1String(GetParam()));
+    makeFifo(fifo);
+    const char* why = "cannot open: a FIFO (named pipe), not a regular file";
+
+    const CliResult info = runCli({QStringLiteral("info"), bundle});
+    EXPECT_EQ(info.exitCode, 1);
+    EXPECT_EQ(reason(info.err), expected("info", fifo, why));
+
+    const CliResult import =
+        runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), store.path});
+    EXPECT_EQ(import.exitCode, 1);
+    EXPECT_EQ(reason(import.err), expected("import", fifo, why));
+    EXPECT_EQ(sha256OfFile(store.path), store.sha256)
+        << "a refused import must not touch the store";
+
+    const CliResult batch =
+        runCli({QStringLiteral("batch"), bundle, QStringLiteral("--what"), QStringLiteral("info"),
+                QStringLiteral("--timeout-s"), QStringLiteral("60")});
+    EXPECT_EQ(batch.exitCode, 1) << batch.err.constData();
+    const QJsonObject line = batchLine(batch);
+    EXPECT_FALSE(line[QStringLiteral("ok")].toBool(true));
+    EXPECT_EQ(line[QStringLiteral("error")].toString(),
+              QStringLiteral("%1: %2").arg(fifo, QLatin1String(why)));
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryBundleFile, FifoInBundle,
+                         ::testing::Values("campaign.json", "samples.csv", "positioning.csv",
+                                           "motion.csv"),
+                         [](const auto& info) {
+                             return QString::fromLatin1(info.param)
+                                 .replace(QLatin1Char('.'), QLatin1Char('_'))
+                                 .toStdString();
+                         });
+
+TEST(BundleRefusalCli, aFifoGivenAsTheBundleOrTheStoreIsRefusedByName) {
+    QTemporaryDir dir;
+    const StoreWithCampaign store(dir);
+    const QString fifo = dir.filePath(QStringLiteral("bundle.zip"));
+    makeFifo(fifo);
+
+    const CliResult info = runCli({QStringLiteral("info"), fifo});
+    EXPECT_EQ(info.exitCode, 1);
+    EXPECT_EQ(reason(info.err),
+              expected("info", fifo, "a FIFO (named pipe), not a bundle folder or .zip archive"));
+    const CliResult import =
+        runCli({QStringLiteral("import"), fifo, QStringLiteral("--db"), store.path});
+    EXPECT_EQ(import.exitCode, 1);
+    EXPECT_EQ(reason(import.err),
+              expected("import", fifo, "a FIFO (named pipe), not a bundle folder or .zip archive"));
+    EXPECT_EQ(sha256OfFile(store.path), store.sha256);
+
+    const QString fifoStore = dir.filePath(QStringLiteral("pipe.sqlite"));
+    makeFifo(fifoStore);
+    const CliResult intoFifo =
+        runCli({QStringLiteral("import"), exampleBundlePath(), QStringLiteral("--db"), fifoStore});
+    EXPECT_EQ(intoFifo.exitCode, 1);
+    EXPECT_EQ(reason(intoFifo.err),
+              expected("import", fifoStore, "a FIFO (named pipe), not a DriftLab store"));
+    const CliResult infoOfFifo = runCli({QStringLiteral("info"), QStringLiteral("--db"), fifoStore,
+                                         QStringLiteral("--campaign"), QStringLiteral("1")});
+    EXPECT_EQ(infoOfFifo.exitCode, 1);
+    EXPECT_EQ(reason(infoOfFifo.err),
+              expected("info", fifoStore, "a FIFO (named pipe), not a DriftLab store"));
+    EXPECT_EQ(QFileInfo(fifoStore).isFile(), false) << "the FIFO must be left as it was";
+}
