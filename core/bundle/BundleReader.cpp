@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/bundle/BundleParser.h"
+#include "core/bundle/BundleWriter.h"
 #include "core/bundle/CampaignJson.h"
 #include "core/bundle/ColumnSpelling.h"
 #include "core/bundle/SampleRows.h"
@@ -19,6 +20,14 @@ namespace driftlab {
 using namespace bundle_files;
 
 Campaign BundleParser::parse() {
+    // An export's staging folder may already hold some files in their final
+    // form; read as a bundle, it would lose what the export had yet to write.
+    if (m_source.contains(kExportLockFile))
+        throw BundleException(
+            {kExportLockFile, 0, 0,
+             QStringLiteral("the staging folder of an export that has not finished (killed, or "
+                            "still writing), not a bundle; the next export to the same folder "
+                            "removes a killed one")});
     QString error;
     auto json = m_source.open(kCampaign, &error);
     // A campaign.json that is there but cannot be read (a FIFO) is named as such;

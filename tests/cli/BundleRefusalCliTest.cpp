@@ -1,16 +1,20 @@
 // Inputs driftlab-cli must refuse by name and with the reason, leaving the
-// store as it was: bundle files that are not regular files. Each case runs the
-// real CLI on real files and checks the exit code, the one-line reason and the
-// store.
+// store as it was: bundle files that are not regular files, the staging folder
+// of a killed export. Each case runs the real CLI on real files and checks the
+// exit code, the one-line reason and the store.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
+#include <QThread>
 
+#include "core/bundle/BundleWriter.h"
 #include "tests/cli/CliRunner.h"
 #include "tests/core/BundleTestSupport.h"
 
@@ -122,4 +126,67 @@ TEST(BundleRefusalCli, aFifoGivenAsTheBundleOrTheStoreIsRefusedByName) {
     EXPECT_EQ(reason(infoOfFifo.err),
               expected("info", fifoStore, "a FIFO (named pipe), not a DriftLab store"));
     EXPECT_EQ(QFileInfo(fifoStore).isFile(), false) << "the FIFO must be left as it was";
+}
+
+TEST(BundleRefusalCli, aKilledExportsStagingFolderIsRefusedAndSweptByTheNextExport) {
+    QTemporaryDir dir;
+    const StoreWithCampaign other(dir);
+    const QString big = dir.filePath(QStringLiteral("big"));
+    // 400 000 sample times: an export long enough to be killed while it writes.
+    ASSERT_FALSE(writeBundle(generatedCampaign(400'000, 3), big));
+    const QString db = dir.filePath(QStringLiteral("big.sqlite"));
+    ASSERT_EQ(runCli({QStringLiteral("import"), big, QStringLiteral("--db"), db}).exitCode, 0);
+    const QString out = dir.filePath(QStringLiteral("out"));
+    const QStringList exportArgs{
+        QStringLiteral("export"), QStringLiteral("--db"),  db, QStringLiteral("--campaign"),
+        QStringLiteral("1"),      QStringLiteral("--out"), out};
+
+    // Killed (as by the OOM killer or a power cut) once its staging folder is locked.
+    QProcess exporter;
+    exporter.start(QStringLiteral(DRIFTLAB_CLI), exportArgs);
+    QString staging;
+    QElapsedTimer waited;
+    waited.start();
+    while (staging.isEmpty() && exporter.state() != QProcess::NotRunning &&
+           waited.elapsed() < 120'000) {
+        for (const QString& name :
+             QDir(dir.path())
+                 .entryList({QStringLiteral("out.partial-*")}, QDir::Dirs | QDir::Hidden))
+            if (QFileInfo::exists(dir.filePath(name + QLatin1Char('/') + kExportLockFile)))
+                staging = dir.filePath(name);
+        QThread::msleep(1);
+    }
+    ASSERT_FALSE(staging.isEmpty()) << "the export ended before it could be killed";
+    exporter.kill();
+    ASSERT_TRUE(exporter.waitForFinished(10'000));
+    ASSERT_EQ(exporter.exitStatus(), QProcess::CrashExit);
+    ASSERT_FALSE(QFileInfo::exists(out)) << "a killed export must leave no bundle at --out";
+
+    const QString lock = QDir(staging).filePath(kExportLockFile);
+    const char* why =
+        "the staging folder of an export that has not finished (killed, or still writing), not a "
+        "bundle; the next export to the same folder removes a killed one";
+    const CliResult info = runCli({QStringLiteral("info"), staging});
+    EXPECT_EQ(info.exitCode, 1);
+    EXPECT_EQ(reason(info.err), expected("info", lock, why));
+    const CliResult import =
+        runCli({QStringLiteral("import"), staging, QStringLiteral("--db"), other.path});
+    EXPECT_EQ(import.exitCode, 1);
+    EXPECT_EQ(reason(import.err), expected("import", lock, why));
+    EXPECT_EQ(sha256OfFile(other.path), other.sha256)
+        << "a refused import must not touch the store";
+    const CliResult batch = runCli(
+        {QStringLiteral("batch"), staging, QStringLiteral("--what"), QStringLiteral("info")});
+    EXPECT_EQ(batch.exitCode, 1);
+    EXPECT_EQ(batchLine(batch)[QStringLiteral("error")].toString(),
+              QStringLiteral("%1: %2").arg(lock, QLatin1String(why)));
+
+    // The next export to the same folder removes it: the process that owned it is gone.
+    const CliResult again = runCli(exportArgs);
+    EXPECT_EQ(again.exitCode, 0) << again.err.constData();
+    EXPECT_FALSE(QFileInfo::exists(staging)) << qPrintable(staging);
+    EXPECT_TRUE(QDir(dir.path())
+                    .entryList({QStringLiteral("out.partial-*")}, QDir::Dirs | QDir::Hidden)
+                    .isEmpty());
+    EXPECT_EQ(runCli({QStringLiteral("info"), out}).exitCode, 0);
 }
