@@ -1,6 +1,7 @@
 // Inputs driftlab-cli must refuse by name and with the reason, leaving the
 // store as it was: bundle files that are not regular files, the staging folder
-// of a killed export. Each case runs the real CLI on real files and checks the
+// of a killed export, a store another process keeps locked, a disk that fills
+// up during an import. Each case runs the real CLI on real files and checks the
 // exit code, the one-line reason and the store.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -11,12 +12,16 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QSqlQuery>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QThread>
 
 #include "core/bundle/BundleWriter.h"
+#include "db/CampaignStore.h"
 #include "tests/cli/CliRunner.h"
 #include "tests/core/BundleTestSupport.h"
+#include "tests/db/StoreTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -189,4 +194,98 @@ TEST(BundleRefusalCli, aKilledExportsStagingFolderIsRefusedAndSweptByTheNextExpo
                     .entryList({QStringLiteral("out.partial-*")}, QDir::Dirs | QDir::Hidden)
                     .isEmpty());
     EXPECT_EQ(runCli({QStringLiteral("info"), out}).exitCode, 0);
+}
+
+TEST(BundleRefusalCli, aStoreAnotherProcessKeepsLockedIsWaitedForThenNamedAsInUse) {
+    QTemporaryDir dir;
+    const StoreWithCampaign store(dir);
+    const QByteArray inUse = store.path.toUtf8() +
+                             ": in use by another process (it kept the store locked for more "
+                             "than 5 s); the store is unchanged";
+    {
+        // As `sqlite3 lab.sqlite` in BEGIN IMMEDIATE would hold it: writers wait.
+        const HeldStoreLock held(store.path, QStringLiteral("BEGIN IMMEDIATE"));
+        ASSERT_TRUE(held.locked);
+        QElapsedTimer waited;
+        waited.start();
+        const CliResult import = runCli({QStringLiteral("import"), QStringLiteral("--again"),
+                                         exampleBundlePath(), QStringLiteral("--db"), store.path});
+        EXPECT_GE(waited.elapsed(), db::kStoreBusyTimeout_ms - 100) << "the busy timeout applies";
+        EXPECT_EQ(import.exitCode, 1);
+        EXPECT_EQ(reason(import.err), "driftlab-cli import: " + inUse);
+        const CliResult run = runCli(
+            {QStringLiteral("run"), QStringLiteral("--procedure"),
+             QStringLiteral(DRIFTLAB_SOURCE_DIR "/resources/procedures/etve-8h.json"),
+             QStringLiteral("--rig"), QStringLiteral("sim"), QStringLiteral("--db"), store.path});
+        EXPECT_EQ(run.exitCode, 1);
+        EXPECT_EQ(reason(run.err), "driftlab-cli run: " + inUse);
+        EXPECT_EQ(sha256OfFile(store.path), store.sha256);
+    }
+
+    // A lock released within the busy timeout only delays the import.
+    auto held = std::make_unique<HeldStoreLock>(store.path, QStringLiteral("BEGIN IMMEDIATE"));
+    ASSERT_TRUE(held->locked);
+    QProcess import;
+    import.start(QStringLiteral(DRIFTLAB_CLI),
+                 {QStringLiteral("import"), QStringLiteral("--again"), exampleBundlePath(),
+                  QStringLiteral("--db"), store.path});
+    ASSERT_TRUE(import.waitForStarted());
+    QThread::msleep(1000);
+    held.reset();
+    ASSERT_TRUE(import.waitForFinished(60'000));
+    EXPECT_EQ(import.exitCode(), 0) << import.readAllStandardError().constData();
+    EXPECT_EQ(import.readAllStandardOutput().trimmed(), QByteArray("2"));
+}
+
+TEST(BundleRefusalCli, anImportOntoAFullDiskSaysSoAndLeavesTheStoreWithItsCampaign) {
+    const QString unshare = QStandardPaths::findExecutable(QStringLiteral("unshare"));
+    QTemporaryDir dir;
+    const QString mount = dir.filePath(QStringLiteral("small-disk"));
+    QDir().mkpath(mount);
+    auto inSmallDisk = [&](const QString& script, const QStringList& args) {
+        QProcess p;
+        // A tmpfs of 300 KiB in a mount namespace of its own: the store (about
+        // 240 KiB) fits, the campaign to import does not.
+        p.start(unshare,
+                QStringList{QStringLiteral("-rm"), QStringLiteral("sh"), QStringLiteral("-c"),
+                            QStringLiteral("mount -t tmpfs -o size=300k tmpfs \"$1\" && ") + script,
+                            QStringLiteral("sh"), mount} +
+                    args);
+        EXPECT_TRUE(p.waitForFinished(120'000));
+        return CliResult{p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
+                         p.readAllStandardOutput(), p.readAllStandardError()};
+    };
+    if (unshare.isEmpty() || inSmallDisk(QStringLiteral("true"), {}).exitCode != 0)
+        GTEST_SKIP() << "needs unshare -rm and a tmpfs mount in a user namespace";
+
+    const StoreWithCampaign store(dir);
+    const QString big = dir.filePath(QStringLiteral("big"));
+    ASSERT_FALSE(writeBundle(generatedCampaign(20'000), big));
+    const QString after = dir.filePath(QStringLiteral("after"));
+    QDir().mkpath(after);
+    // The store is copied onto the small disk, imported into, and copied back
+    // (with any -wal or -shm beside it) for the checks: the tmpfs ends with the namespace.
+    const CliResult r = inSmallDisk(
+        QStringLiteral(
+            "cp \"$2\" \"$1/lab.sqlite\" && \"$3\" import \"$4\" --db \"$1/lab.sqlite\"; "
+            "code=$?; cp \"$1\"/lab.sqlite* \"$5\"/ && exit $code"),
+        {store.path, QStringLiteral(DRIFTLAB_CLI), big, after});
+    const QString onSmallDisk = mount + QStringLiteral("/lab.sqlite");
+    EXPECT_EQ(r.exitCode, 1) << r.err.constData();
+    EXPECT_EQ(reason(r.err), "driftlab-cli import: " + onSmallDisk.toUtf8() +
+                                 ": disk full: nothing of 'generated 20000 rows' was imported; "
+                                 "the store is unchanged");
+
+    const QString copy = after + QStringLiteral("/lab.sqlite");
+    EXPECT_EQ(folderEntries(after), QStringList{QStringLiteral("lab.sqlite")})
+        << "the store is closed cleanly: no -wal or -shm";
+    QString error;
+    auto reopened = db::CampaignStore::open(copy, db::StoreAccess::ReadOnly, &error);
+    ASSERT_TRUE(reopened) << qPrintable(error);
+    QSqlQuery q(reopened->database());
+    ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA integrity_check")) && q.next());
+    EXPECT_EQ(q.value(0).toString(), QStringLiteral("ok"));
+    const auto campaigns = reopened->listCampaigns();
+    ASSERT_EQ(campaigns.size(), 1u);
+    EXPECT_EQ(campaigns[0].name, QStringLiteral("X axis moving-state example"));
 }
