@@ -7,6 +7,7 @@
 #include "app/cli/AnalysisJson.h"
 #include "app/cli/CliCommon.h"
 #include "core/bundle/CsvTable.h"
+#include "core/domain/MessageText.h"
 #include "core/iso/Iso230_2.h"
 
 namespace driftlab::cli {
@@ -29,8 +30,8 @@ std::vector<iso::Reading> readCsv(const QString& path) {
             const auto d = directionFromText(table.text(direction));
             if (!d)
                 table.fail(direction, QStringLiteral("direction must be '+' (positive approach, "
-                                                     "↑) or '-' (negative approach, ↓), not '%1'")
-                                          .arg(table.text(direction)));
+                                                     "↑) or '-' (negative approach, ↓), not %1")
+                                          .arg(quotedCell(table.field(direction))));
             readings.push_back(
                 {table.number(target), *d, table.integer(cycle), table.number(deviation)});
         }

@@ -46,7 +46,7 @@ public:
             v.toString().toDouble(&isNumber);
             fail(key, isNumber ? QStringLiteral("expected a number, found the text \"%1\" "
                                                 "(write a number without quotes)")
-                                     .arg(v.toString())
+                                     .arg(shownText(v.toString()))
                                : QStringLiteral("expected a number"));
         }
         return v.toDouble();
@@ -136,8 +136,8 @@ Screw readScrew(ObjectReader r) {
                                        QStringLiteral("fixed-fixed")};
     if (!mountings.contains(s.mounting))
         r.fail(QStringLiteral("mounting"),
-               QStringLiteral("unknown mounting '%1' (expected %2)")
-                   .arg(s.mounting, mountings.join(QStringLiteral(", "))));
+               QStringLiteral("unknown mounting %1 (expected %2)")
+                   .arg(quotedText(s.mounting), mountings.join(QStringLiteral(", "))));
     s.alpha_per_K = r.positiveOr(QStringLiteral("alpha_per_K"), s.alpha_per_K);
     if (s.alpha_per_K > 1e-3)
         r.fail(QStringLiteral("alpha_per_K"),
@@ -171,23 +171,23 @@ Channel readChannel(ObjectReader r) {
     c.id = r.string(QStringLiteral("id"), true);
     if (!isValidIdentifier(c.id) || isAxisColumn(c.id) || c.id == QLatin1String("run") ||
         c.id == QLatin1String("time_s"))
-        r.fail(QStringLiteral("id"),
-               QStringLiteral("'%1' is not a valid channel id ([A-Za-z0-9_]+, "
-                              "not run, time_s or an axis column)")
-                   .arg(c.id));
+        r.fail(QStringLiteral("id"), QStringLiteral("%1 is not a valid channel id ([A-Za-z0-9_]+, "
+                                                    "not run, time_s or an axis column)")
+                                         .arg(quotedText(c.id)));
     QString quantity = r.string(QStringLiteral("quantity"), true);
     auto q = quantityFromString(quantity);
     if (!q)
         r.fail(QStringLiteral("quantity"),
-               QStringLiteral("unknown quantity '%1' (expected temperature, displacement or speed)")
-                   .arg(quantity));
+               QStringLiteral("unknown quantity %1 (expected temperature, displacement or speed)")
+                   .arg(quotedText(quantity)));
     c.quantity = *q;
     QString role = r.string(QStringLiteral("role"), true);
     auto ro = roleFromString(role);
     if (!ro || !roleAllowedFor(c.quantity, *ro))
-        r.fail(QStringLiteral("role"),
-               QStringLiteral("unknown role '%1' for a %2 channel (expected %3)")
-                   .arg(role, toString(*q), roleNamesFor(*q).join(QStringLiteral(", "))));
+        r.fail(
+            QStringLiteral("role"),
+            QStringLiteral("unknown role %1 for a %2 channel (expected %3)")
+                .arg(quotedText(role), toString(*q), roleNamesFor(*q).join(QStringLiteral(", "))));
     c.role = *ro;
     c.location = r.string(QStringLiteral("location"), false);
     c.position_mm = r.optionalNumber(QStringLiteral("position_mm"));
@@ -200,14 +200,13 @@ Run readRun(ObjectReader r) {
     run.id = r.string(QStringLiteral("id"), true);
     if (!isValidIdentifier(run.id))
         r.fail(QStringLiteral("id"),
-               QStringLiteral("'%1' is not a valid run id ([A-Za-z0-9_]+)").arg(run.id));
+               QStringLiteral("%1 is not a valid run id ([A-Za-z0-9_]+)").arg(quotedText(run.id)));
     QString kind = r.string(QStringLiteral("kind"), true);
     auto k = runKindFromString(kind);
     if (!k)
-        r.fail(
-            QStringLiteral("kind"),
-            QStringLiteral("unknown run kind '%1' (expected moving, spindle, etve or positioning)")
-                .arg(kind));
+        r.fail(QStringLiteral("kind"),
+               QStringLiteral("unknown run kind %1 (expected moving, spindle, etve or positioning)")
+                   .arg(quotedText(kind)));
     run.kind = *k;
     run.feed_mm_min = r.optionalNumber(QStringLiteral("feed_mm_min"));
     run.range_mm = r.optionalRange(QStringLiteral("range_mm"));
@@ -246,8 +245,8 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName) {
                    ? QStringLiteral("missing (a campaign.json names its format: \"format\": "
                                     "\"%1\")")
                          .arg(kCampaignFormat)
-                   : QStringLiteral("unsupported format '%1' (expected %2)")
-                         .arg(format, kCampaignFormat));
+                   : QStringLiteral("unsupported format %1 (expected %2)")
+                         .arg(quotedText(format), kCampaignFormat));
     c.name = r.string(QStringLiteral("name"), true);
 
     ObjectReader machine = r.object(QStringLiteral("machine"));
@@ -282,18 +281,20 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName) {
     for (int i = 0; i < channels.size(); ++i) {
         Channel ch = readChannel(elementReader(channels, i, QStringLiteral("channels"), fileName));
         if (c.findChannel(ch.id))
-            throw BundleException(
-                {fileName, 0, 0,
-                 QStringLiteral("channels[%1].id: duplicate channel id '%2'").arg(i).arg(ch.id)});
+            throw BundleException({fileName, 0, 0,
+                                   QStringLiteral("channels[%1].id: duplicate channel id %2")
+                                       .arg(i)
+                                       .arg(quotedText(ch.id))});
         c.channels.push_back(std::move(ch));
     }
     QJsonArray runs = r.array(QStringLiteral("runs"));
     for (int i = 0; i < runs.size(); ++i) {
         Run run = readRun(elementReader(runs, i, QStringLiteral("runs"), fileName));
         if (c.findRun(run.id))
-            throw BundleException(
-                {fileName, 0, 0,
-                 QStringLiteral("runs[%1].id: duplicate run id '%2'").arg(i).arg(run.id)});
+            throw BundleException({fileName, 0, 0,
+                                   QStringLiteral("runs[%1].id: duplicate run id %2")
+                                       .arg(i)
+                                       .arg(quotedText(run.id))});
         if (isFeedAxisRun(run.kind) && (!c.screw || !c.nut_length_mm))
             throw BundleException(
                 {fileName, 0, 0,

@@ -67,6 +67,8 @@ public:
     /// count (a run is counted from its first record), and UTC has no jumps.
     double time(int column) const;
     QString text(int column) const;
+    /// The header of `column` as a message quotes it (MessageText.h).
+    QString columnName(int column) const;
 
     [[noreturn]] void fail(int column, const QString& message) const;
 

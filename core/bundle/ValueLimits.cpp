@@ -144,9 +144,9 @@ std::optional<QString> wrongUnit(Quantity quantity, const QString& unit) {
     }
     if (spellings.contains(u, Qt::CaseInsensitive)) return std::nullopt;
     return QStringLiteral(
-               "the header gives its unit as '%1', but a %2 channel is read in %3 "
+               "the header gives its unit as %1, but a %2 channel is read in %3 "
                "(a unit mix-up? convert the column, or name it without a unit)")
-        .arg(unit, toString(quantity), unitOf(quantity));
+        .arg(quotedText(unit), toString(quantity), unitOf(quantity));
 }
 
 }  // namespace driftlab

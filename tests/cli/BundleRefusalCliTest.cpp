@@ -1,8 +1,9 @@
 // Inputs driftlab-cli must refuse by name and with the reason, leaving the
 // store as it was: bundle files that are not regular files, the staging folder
 // of a killed export, a store another process keeps locked, a disk that fills
-// up during an import. Each case runs the real CLI on real files and checks the
-// exit code, the one-line reason and the store.
+// up during an import, cells that would break the message line. Each case runs
+// the real CLI on real files and checks the exit code, the one-line reason and
+// the store.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -49,7 +50,7 @@ void makeFifo(const QString& path) {
 
 QByteArray expected(const char* command, const QString& path, const char* why) {
     return QStringLiteral("driftlab-cli %1: %2: %3")
-        .arg(QLatin1String(command), path, QLatin1String(why))
+        .arg(QLatin1String(command), path, QString::fromUtf8(why))
         .toUtf8();
 }
 
@@ -288,4 +289,41 @@ TEST(BundleRefusalCli, anImportOntoAFullDiskSaysSoAndLeavesTheStoreWithItsCampai
     const auto campaigns = reopened->listCampaigns();
     ASSERT_EQ(campaigns.size(), 1u);
     EXPECT_EQ(campaigns[0].name, QStringLiteral("X axis moving-state example"));
+}
+
+/// A copy of the example bundle in `dir` with `file`'s `what` replaced by `with`.
+QString brokenBundle(const QTemporaryDir& dir, const char* file, const QByteArray& what,
+                     const QByteArray& with) {
+    const QString bundle = dir.filePath(QStringLiteral("bundle"));
+    copyBundle(exampleBundlePath(), bundle);
+    replaceInFile(QDir(bundle).filePath(QLatin1String(file)), what, with);
+    return bundle;
+}
+
+TEST(BundleRefusalCli, aCellWithANulOrOfThreeMegabytesIsShownEscapedAndShortened) {
+    QTemporaryDir dir;
+    const StoreWithCampaign store(dir);
+    {
+        const QString bundle =
+            brokenBundle(dir, "samples.csv", "\nS1,20,", QByteArray("\nS1,20,x\0y", 10));
+        const CliResult info = runCli({QStringLiteral("info"), bundle});
+        EXPECT_EQ(info.exitCode, 1);
+        EXPECT_EQ(reason(info.err),
+                  expected("info", QDir(bundle).filePath(QStringLiteral("samples.csv:4:3")),
+                           "non-numeric cell 'x\\0y20.08' in column 'T_nut'"));
+    }
+    QTemporaryDir big;
+    const QString bundle =
+        brokenBundle(big, "samples.csv", "\nS1,20,", '\n' + QByteArray(3'000'000, 'A') + ",20,");
+    const CliResult import =
+        runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), store.path});
+    EXPECT_EQ(import.exitCode, 1);
+    EXPECT_EQ(reason(import.err),
+              expected("import", QDir(bundle).filePath(QStringLiteral("samples.csv:4:1")),
+                       "unknown run id "
+                       "'AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA…' (3000000 "
+                       "bytes) (not in campaign.json)"));
+    EXPECT_LT(import.err.size(), 1000) << "the cell must not be echoed whole";
+    EXPECT_EQ(sha256OfFile(store.path), store.sha256)
+        << "a refused import must not touch the store";
 }

@@ -298,6 +298,26 @@ const std::vector<BadBundleCase>& badBundleCases() {
              writeFile(file(d, "samples.csv"), csv);
          },
          "samples.csv:3:3", "mixes '.' and ','"},
+        // A cell or value is shown escaped and shortened: the message stays one whole line.
+        {"nul_byte_in_a_cell",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,20,", QByteArray("\nS1,20,x\0y", 10));
+         },
+         "samples.csv:4:3", "non-numeric cell 'x\\0y20.08' in column 'T_nut'"},
+        {"three_megabyte_run_id",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,20,",
+                           '\n' + QByteArray(3'000'000, 'A') + ",20,");
+         },
+         "samples.csv:4:1",
+         "unknown run id 'AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA…' (3000000 "
+         "bytes) (not in campaign.json)"},
+        {"terminal_escape_in_a_json_value",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"quantity\": \"speed\"",
+                           "\"quantity\": \"\\u001b[2Jspeed\"");
+         },
+         "campaign.json", "channels[7].quantity: unknown quantity '\\x1b[2Jspeed'"},
         {"motion_ends_before_start",
          [=](const QString& d) {
              replaceInFile(file(d, "motion.csv"), "S1,0.000,2.100,", "S1,0.000,-2.100,");
