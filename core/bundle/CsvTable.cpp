@@ -317,11 +317,20 @@ double CsvTable::numberOrMissing(int column) const {
     return value;
 }
 
-int CsvTable::integer(int column) const {
+int CsvTable::integer(int column, int min, int max) const {
     std::string_view cell = field(column);
     int value = 0;
     auto [ptr, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
-    if (cell.empty() || ec != std::errc() || ptr != cell.data() + cell.size())
+    const bool whole = !cell.empty() && ptr == cell.data() + cell.size();
+    // An integer too large for an int is still an integer: say so, with the range.
+    if (whole && (ec == std::errc::result_out_of_range ||
+                  (ec == std::errc() && (value < min || value > max))))
+        fail(column, QStringLiteral("value %1 in column %2 is out of range: an integer from %3 "
+                                    "to %4 is expected")
+                         .arg(quotedCell(cell), columnName(column))
+                         .arg(min)
+                         .arg(max));
+    if (!whole || ec != std::errc())
         fail(column, QStringLiteral("expected an integer in column %1, found %2")
                          .arg(columnName(column), quotedCell(cell)));
     return value;

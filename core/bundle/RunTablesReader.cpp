@@ -96,8 +96,7 @@ void BundleParser::readPositioning() {
                                .arg(quotedText(run.id))
                                .arg(numberText(p.time_s))
                                .arg(numberText(run.positioning.back().time_s)));
-        p.cycle = csv.integer(c[2]);
-        if (p.cycle < 0) csv.fail(c[2], QStringLiteral("cycle must not be negative"));
+        p.cycle = csv.integer(c[2], 0);  // cycles count passes, from 0
         p.target_mm = csv.number(c[3]);
         checkPosition(csv, c[3], p.target_mm, overrun);
         const QString direction = csv.text(c[4]);

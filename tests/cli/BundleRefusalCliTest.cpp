@@ -1,9 +1,9 @@
 // Inputs driftlab-cli must refuse by name and with the reason, leaving the
 // store as it was: bundle files that are not regular files, the staging folder
 // of a killed export, a store another process keeps locked, a disk that fills
-// up during an import, cells that would break the message line. Each case runs
-// the real CLI on real files and checks the exit code, the one-line reason and
-// the store.
+// up during an import, cells that would break the message line, integers out
+// of range. Each case runs the real CLI on real files and checks the exit
+// code, the one-line reason and the store.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -324,6 +324,26 @@ TEST(BundleRefusalCli, aCellWithANulOrOfThreeMegabytesIsShownEscapedAndShortened
                        "'AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA…' (3000000 "
                        "bytes) (not in campaign.json)"));
     EXPECT_LT(import.err.size(), 1000) << "the cell must not be echoed whole";
+    EXPECT_EQ(sha256OfFile(store.path), store.sha256)
+        << "a refused import must not touch the store";
+}
+
+TEST(BundleRefusalCli, aCycleBeyondTheIntegerRangeIsNamedOutOfRangeWithTheRange) {
+    QTemporaryDir dir;
+    const StoreWithCampaign store(dir);
+    const QString bundle = brokenBundle(dir, "positioning.csv", "\nS1,0,0,0,+,0.13\n",
+                                        "\nS1,0,99999999999,0,+,0.13\n");
+    const QString where = QDir(bundle).filePath(QStringLiteral("positioning.csv:2:3"));
+    const char* why =
+        "value '99999999999' in column 'cycle' is out of range: an integer from 0 to 2147483647 "
+        "is expected";
+    const CliResult info = runCli({QStringLiteral("info"), bundle});
+    EXPECT_EQ(info.exitCode, 1);
+    EXPECT_EQ(reason(info.err), expected("info", where, why));
+    const CliResult import =
+        runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), store.path});
+    EXPECT_EQ(import.exitCode, 1);
+    EXPECT_EQ(reason(import.err), expected("import", where, why));
     EXPECT_EQ(sha256OfFile(store.path), store.sha256)
         << "a refused import must not touch the store";
 }

@@ -318,6 +318,23 @@ const std::vector<BadBundleCase>& badBundleCases() {
                            "\"quantity\": \"\\u001b[2Jspeed\"");
          },
          "campaign.json", "channels[7].quantity: unknown quantity '\\x1b[2Jspeed'"},
+        // An integer beyond the range of its column is no non-integer.
+        {"cycle_beyond_the_integer_range",
+         [=](const QString& d) {
+             replaceInFile(file(d, "positioning.csv"), "\nS1,0,0,0,+,0.13\n",
+                           "\nS1,0,99999999999,0,+,0.13\n");
+         },
+         "positioning.csv:2:3",
+         "value '99999999999' in column 'cycle' is out of range: an integer from 0 to 2147483647 "
+         "is expected"},
+        {"negative_cycle",
+         [=](const QString& d) {
+             replaceInFile(file(d, "positioning.csv"), "\nS1,0,0,0,+,0.13\n",
+                           "\nS1,0,-1,0,+,0.13\n");
+         },
+         "positioning.csv:2:3",
+         "value '-1' in column 'cycle' is out of range: an integer from 0 to 2147483647 is "
+         "expected"},
         {"motion_ends_before_start",
          [=](const QString& d) {
              replaceInFile(file(d, "motion.csv"), "S1,0.000,2.100,", "S1,0.000,-2.100,");
