@@ -39,7 +39,7 @@ Campaign BundleParser::parse() {
                  .arg(error, m_source.contains(kCampaign)
                                  ? QString()
                                  : QStringLiteral(" (is this a campaign bundle?)"))});
-    m_campaign = campaignFromJson(json->readAll(), kCampaign);
+    m_campaign = campaignFromJson(json->readAll(), kCampaign, &warnings);
     for (std::size_t i = 0; i < m_campaign.runs.size(); ++i)
         m_runIndex.insert(m_campaign.runs[i].id, int(i));
     setPositionLimits();

@@ -1,9 +1,9 @@
 // Inputs driftlab-cli must refuse by name and with the reason, leaving the
 // store as it was: bundle files that are not regular files, the staging folder
 // of a killed export, a store another process keeps locked, a disk that fills
-// up during an import, cells that would break the message line, integers out
-// of range. Each case runs the real CLI on real files and checks the exit
-// code, the one-line reason and the store.
+// up during an import, misspelt keys in campaign.json, cells that would break
+// the message line, integers out of range. Each case runs the real CLI on real
+// files and checks the exit code, the one-line reason and the store.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -298,6 +298,41 @@ QString brokenBundle(const QTemporaryDir& dir, const char* file, const QByteArra
     copyBundle(exampleBundlePath(), bundle);
     replaceInFile(QDir(bundle).filePath(QLatin1String(file)), what, with);
     return bundle;
+}
+
+TEST(BundleRefusalCli, aMisspeltScrewKeyIsRefusedAndOtherUnknownKeysAreNamedOrKept) {
+    QTemporaryDir dir;
+    const StoreWithCampaign store(dir);
+    const QString bundle = brokenBundle(dir, "campaign.json", "\"alpha_per_K\"", "\"alpha_perK\"");
+    const char* why =
+        "screw.alpha_perK: unknown key (did you mean 'alpha_per_K'? without it, alpha_per_K "
+        "would be 1.15e-05 per K)";
+    const QString json = QDir(bundle).filePath(QStringLiteral("campaign.json"));
+    const CliResult info = runCli({QStringLiteral("info"), bundle});
+    EXPECT_EQ(info.exitCode, 1);
+    EXPECT_EQ(reason(info.err), expected("info", json, why));
+    const CliResult import =
+        runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), store.path});
+    EXPECT_EQ(import.exitCode, 1);
+    EXPECT_EQ(reason(import.err), expected("import", json, why));
+    EXPECT_EQ(sha256OfFile(store.path), store.sha256)
+        << "a refused import must not touch the store";
+
+    // Where the default changes nothing, a misspelling is a warning; another
+    // tool's key at the top level is kept without a word.
+    QTemporaryDir other;
+    const QString warned = brokenBundle(other, "campaign.json", "\"location\": \"nut flank\"",
+                                        "\"locaton\": \"nut flank\"");
+    replaceInFile(QDir(warned).filePath(QStringLiteral("campaign.json")), "\"nut_length_mm\"",
+                  "\"operator\": {\"name\": \"A. Engineer\"}, \"nut_length_mm\"");
+    const CliResult read = runCli({QStringLiteral("info"), warned});
+    EXPECT_EQ(read.exitCode, 0) << read.err.constData();
+    QByteArrayList warnings;
+    for (const QByteArray& line : read.err.split('\n'))
+        if (line.startsWith("warning: ")) warnings << line;
+    EXPECT_EQ(warnings, QByteArrayList{"warning: campaign.json: channels[0].locaton: unknown key, "
+                                       "kept as is (did you mean 'location'?)"})
+        << read.err.constData();
 }
 
 TEST(BundleRefusalCli, aCellWithANulOrOfThreeMegabytesIsShownEscapedAndShortened) {

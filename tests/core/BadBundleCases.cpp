@@ -298,6 +298,33 @@ const std::vector<BadBundleCase>& badBundleCases() {
              writeFile(file(d, "samples.csv"), csv);
          },
          "samples.csv:3:3", "mixes '.' and ','"},
+        // A misspelt key whose absence changes a result: the default would be used.
+        {"misspelt_expansion_coefficient",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"alpha_per_K\"", "\"alpha_perK\"");
+         },
+         "campaign.json",
+         "screw.alpha_perK: unknown key (did you mean 'alpha_per_K'? without it, alpha_per_K "
+         "would be 1.15e-05 per K)"},
+        {"misspelt_screw_length",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"length_mm\"", "\"lenght_mm\"");
+         },
+         "campaign.json", "screw.lenght_mm: unknown key (did you mean 'length_mm'?)"},
+        {"dead_path_without_its_unit",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"dead_path_mm\"", "\"dead_path\"");
+         },
+         "campaign.json",
+         "interferometer.dead_path: unknown key (did you mean 'dead_path_mm'? without it, "
+         "dead_path_mm would be 0 mm)"},
+        {"misspelt_travel",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"travel_mm\"", "\"travel_nm\"");
+         },
+         "campaign.json",
+         "travel_nm: unknown key (did you mean 'travel_mm'? without it, travel_mm would be "
+         "absent)"},
         // A cell or value is shown escaped and shortened: the message stays one whole line.
         {"nul_byte_in_a_cell",
          [=](const QString& d) {

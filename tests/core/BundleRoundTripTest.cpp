@@ -81,6 +81,7 @@ TEST(BundleWriter, unknownKeysAreKeptForTheToolThatWroteThem) {
                   "\"operator\": {\"name\": \"A. Engineer\"}, \"nut_length_mm\"");
     BundleReadResult read = readBundle(dir.path());
     ASSERT_TRUE(read.ok());
+    EXPECT_TRUE(read.warnings.isEmpty()) << qPrintable(read.warnings.join('\n'));
     EXPECT_EQ(read.campaign->extra.value(QStringLiteral("operator"))
                   .toObject()
                   .value(QStringLiteral("name")),

@@ -63,6 +63,30 @@ TEST(BundleReader, aFifoInTheBundleIsRefusedWithoutWaitingForAWriter) {
     }
 }
 
+TEST(BundleReader, unknownKeysInTheFormatsObjectsAreNamedAndKept) {
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    const QString json = dir.filePath(QStringLiteral("campaign.json"));
+    replaceInFile(json, "\"axis\": \"X\",", "\"axis\": \"X\", \"serial\": \"4711\",");
+    replaceInFile(json, "\"kind\": \"moving\",", "\"kind\": \"moving\", \"feed\": 8000,");
+    // Top level: another tool's key without a word, a near miss of a given key named.
+    replaceInFile(json, "\"nut_length_mm\"",
+                  "\"tool\": \"x\", \"nut_lenght_mm\": 80, \"nut_length_mm\"");
+    const BundleReadResult read = readBundle(dir.path());
+    ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
+    EXPECT_EQ(read.warnings,
+              QStringList({QStringLiteral("campaign.json: nut_lenght_mm: unknown key, kept as is "
+                                          "(did you mean 'nut_length_mm'?)"),
+                           QStringLiteral("campaign.json: machine.serial: unknown key, kept as is "
+                                          "(the format's keys here: name, axis, controller)"),
+                           QStringLiteral("campaign.json: runs[0].feed: unknown key, kept as is "
+                                          "(did you mean 'feed_mm_min'?)")}));
+    EXPECT_EQ(read.campaign->machine.extra.value(QStringLiteral("serial")).toString(),
+              QStringLiteral("4711"));
+    EXPECT_EQ(read.campaign->runs[0].extra.value(QStringLiteral("feed")).toInt(), 8000);
+    EXPECT_EQ(read.campaign->extra.value(QStringLiteral("tool")).toString(), QStringLiteral("x"));
+}
+
 TEST(BundleReader, feedAxisRunWithoutScrewIsRejected) {
     QTemporaryDir dir;
     copyBundle(exampleBundlePath(), dir.path());
