@@ -9,6 +9,7 @@
 #include "core/bundle/BundleReader.h"
 #include "db/SampleBlocks.h"
 #include "db/SqlValues.h"
+#include "db/SqliteStatement.h"
 #include "db/StoreBackend.h"
 
 namespace driftlab::db {
@@ -130,6 +131,18 @@ public:
     void row(std::size_t, double, const double*) override {}
 };
 
+/// Why the import of campaign `name` into `store` failed, when SQLite's result
+/// code says more than its text ("database or disk is full Unable to fetch
+/// row"): in the user's words, with the store's path and the outcome. Empty for
+/// other failures. Read before the rollback, which resets the result code.
+QString storeFailure(CampaignStore& store, const QString& name) {
+    sqlite3* handle = sqliteHandle(store.database());
+    const QString condition = handle ? storeWriteCondition(sqlite3_errcode(handle)) : QString();
+    if (condition.isEmpty()) return {};
+    return QStringLiteral("%1: %2: nothing of '%3' was imported; the store is unchanged")
+        .arg(store.path(), condition, name);
+}
+
 /// "path/file:line:column: why" of a reader's error.
 QString located(const BundleSource& source, BundleError e) {
     e.file = source.displayPath(e.file);
@@ -142,7 +155,10 @@ std::optional<qint64> CampaignStore::importCampaign(
     const Campaign& c, QString* error, const std::function<bool(double)>& progress,
     const std::function<void(qint64 campaignId)>& beforeCommit) {
     if (!m_db.transaction()) {
-        *error = QStringLiteral("cannot start a transaction: ") + m_db.lastError().text();
+        const QString failure = storeFailure(*this, c.name);
+        *error = failure.isEmpty()
+                     ? QStringLiteral("cannot start a transaction: ") + m_db.lastError().text()
+                     : failure;
         return std::nullopt;
     }
     try {
@@ -167,8 +183,12 @@ std::optional<qint64> CampaignStore::importCampaign(
         if (progress) progress(1.0);
         return id;
     } catch (const QString& why) {
+        const QString failure = storeFailure(*this, c.name);
         m_db.rollback();
-        *error = QStringLiteral("import of '%1' into %2 rolled back: %3").arg(c.name, path(), why);
+        *error =
+            failure.isEmpty()
+                ? QStringLiteral("import of '%1' into %2 rolled back: %3").arg(c.name, path(), why)
+                : failure;
         return std::nullopt;
     }
 }
@@ -209,9 +229,20 @@ BundleImportResult importBundle(CampaignStore& store, const BundleSource& source
                                 const BundleCheck& checked, const BundleImportOptions& options) {
     BundleImportResult result;
     QSqlDatabase& db = store.database();
-    if (!db.transaction()) {
-        result.error =
-            store.path() + QStringLiteral(": cannot start a transaction: ") + db.lastError().text();
+    // On SQLite the write lock is taken first, waiting for another process's
+    // as long as the busy timeout: Qt's deferred BEGIN would read (the check
+    // for an earlier import) before it writes, and SQLite refuses such a
+    // reader's later write at once, without waiting, when another holds the lock.
+    QSqlQuery begin(db);
+    const bool begun = backendOf(db) == StoreBackend::Sqlite
+                           ? begin.exec(QStringLiteral("BEGIN IMMEDIATE"))
+                           : db.transaction();
+    if (!begun) {
+        result.error = storeFailure(store, checked.name);
+        if (result.error.isEmpty())
+            result.error =
+                store.path() + QStringLiteral(": cannot start a transaction: ") +
+                (begin.lastError().isValid() ? begin.lastError() : db.lastError()).text();
         return result;
     }
     try {
@@ -225,8 +256,9 @@ BundleImportResult importBundle(CampaignStore& store, const BundleSource& source
         if (!db.commit()) throw QStringLiteral("commit failed: ") + db.lastError().text();
         result.campaignId = id;
     } catch (const QString& why) {
+        result.error = storeFailure(store, checked.name);
+        if (result.error.isEmpty()) result.error = why;
         db.rollback();
-        result.error = why;
     }
     return result;
 }

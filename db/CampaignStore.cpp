@@ -5,6 +5,7 @@
 #include <cerrno>
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QSqlError>
@@ -12,6 +13,7 @@
 #include <QTemporaryFile>
 #include <utility>
 
+#include "core/bundle/RegularFile.h"
 #include "db/SchemaMigrations.h"
 #include "db/SqlValues.h"
 #include "db/SqliteStatement.h"
@@ -28,6 +30,32 @@ QString run(QSqlDatabase& db, const QString& sql, QVariant* value = nullptr) {
     if (!q.exec(sql)) return q.lastError().text();
     if (value) *value = q.next() ? q.value(0) : QVariant();
     return {};
+}
+
+/// Whether a statement failed because another connection holds the store's lock.
+bool isLockedOut(const QSqlError& error) {
+    const int code = error.nativeErrorCode().toInt() & 0xFF;  // the primary result code
+    return code == SQLITE_BUSY || code == SQLITE_LOCKED;
+}
+
+/// PRAGMA journal_mode = WAL, waiting for another process's lock as long as the
+/// busy timeout would. SQLite does not call its busy handler for a change of
+/// journal mode (the statement has read the file before it needs the file to
+/// itself), so without this wait a store locked for a moment, by a writer
+/// between two commits, would be refused at once.
+QSqlError switchToWal(QSqlDatabase& db, QVariant* mode) {
+    QElapsedTimer waited;
+    waited.start();
+    for (;;) {
+        QSqlQuery q(db);
+        if (q.exec(QStringLiteral("PRAGMA journal_mode = WAL"))) {
+            *mode = q.next() ? q.value(0) : QVariant();
+            return {};
+        }
+        if (!isLockedOut(q.lastError()) || waited.hasExpired(kStoreBusyTimeout_ms))
+            return q.lastError();
+        sqlite3_sleep(20);
+    }
 }
 
 /// Why the inspected file is not one DriftLab may open with `access`; empty if it may.
@@ -102,6 +130,21 @@ QString reserveTemporaryFile(const QString& path, QString* why) {
 
 }  // namespace
 
+QString storeWriteCondition(int sqliteResultCode) {
+    switch (sqliteResultCode & 0xFF) {
+        case SQLITE_BUSY:
+        case SQLITE_LOCKED:
+            return QStringLiteral(
+                       "in use by another process (it kept the store locked for more "
+                       "than %1 s)")
+                .arg(kStoreBusyTimeout_ms / 1000);
+        case SQLITE_FULL:
+            return QStringLiteral("disk full");
+        default:
+            return {};
+    }
+}
+
 std::unique_ptr<CampaignStore> CampaignStore::open(const QString& path, StoreAccess access,
                                                    QString* error) {
     if (isServerStoreUrl(path)) return openOnServer(path, access, error);
@@ -125,6 +168,9 @@ std::unique_ptr<CampaignStore> CampaignStore::open(const QString& path, StoreAcc
     StoreFileInfo info;
     QString why;
     if (file.isDir()) return fail(QStringLiteral("a folder, not a DriftLab store"));
+    // Inspecting a FIFO would wait for its writer; a device is no database.
+    if (const QString kind = irregularFileKind(path); !kind.isEmpty())
+        return fail(kind + QStringLiteral(", not a DriftLab store"));
     if (!file.exists()) {
         if (access != StoreAccess::CreateIfMissing)
             return fail(QStringLiteral("no such DriftLab store"));
@@ -143,7 +189,8 @@ std::unique_ptr<CampaignStore> CampaignStore::open(const QString& path, StoreAcc
         const std::optional<bool> immutable = needsImmutableRead(path, info.walMode, &why);
         if (!immutable) return fail(why);
         db.setConnectOptions(
-            QStringLiteral("QSQLITE_OPEN_READONLY;QSQLITE_OPEN_URI;QSQLITE_BUSY_TIMEOUT=5000"));
+            QStringLiteral("QSQLITE_OPEN_READONLY;QSQLITE_OPEN_URI;QSQLITE_BUSY_TIMEOUT=%1")
+                .arg(kStoreBusyTimeout_ms));
         db.setDatabaseName(sqliteUri(
             path, *immutable ? QStringLiteral("mode=ro&immutable=1") : QStringLiteral("mode=ro")));
         if (!db.open()) return fail(db.lastError().text());
@@ -155,7 +202,8 @@ std::unique_ptr<CampaignStore> CampaignStore::open(const QString& path, StoreAcc
 
     // mode=rw: the file exists (inspected, or reserved above); SQLite must not
     // create one, as Qt's read-write open otherwise would.
-    db.setConnectOptions(QStringLiteral("QSQLITE_OPEN_URI;QSQLITE_BUSY_TIMEOUT=5000"));
+    db.setConnectOptions(
+        QStringLiteral("QSQLITE_OPEN_URI;QSQLITE_BUSY_TIMEOUT=%1").arg(kStoreBusyTimeout_ms));
     db.setDatabaseName(
         sqliteUri(temporaryPath.isEmpty() ? path : temporaryPath, QStringLiteral("mode=rw")));
     if (!db.open()) return fail(db.lastError().text());
@@ -166,7 +214,13 @@ std::unique_ptr<CampaignStore> CampaignStore::open(const QString& path, StoreAcc
     // keeps the file consistent on power loss and loses at most the last commits.
     QVariant mode;
     QString e = run(db, QStringLiteral("PRAGMA foreign_keys = ON"));
-    if (e.isEmpty()) e = run(db, QStringLiteral("PRAGMA journal_mode = WAL"), &mode);
+    if (e.isEmpty()) {
+        const QSqlError wal = switchToWal(db, &mode);
+        if (isLockedOut(wal))
+            return fail(storeWriteCondition(SQLITE_BUSY) +
+                        QStringLiteral("; the store is unchanged"));
+        if (wal.isValid()) e = wal.text();
+    }
     if (e.isEmpty() && mode.toString() != QLatin1String("wal"))
         e = QStringLiteral("journal mode stays '%1'").arg(mode.toString());
     if (e.isEmpty()) e = run(db, QStringLiteral("PRAGMA synchronous = NORMAL"));

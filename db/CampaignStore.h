@@ -24,6 +24,16 @@ namespace driftlab::db {
 /// it, id 0, is stamped then); DriftLab writes into no file with another id.
 inline constexpr quint32 kStoreApplicationId = 0x44524654;
 
+/// How long a command waits for another process's lock on a SQLite store (SQLite's
+/// busy timeout, and the wait for a change of journal mode) before it gives up.
+inline constexpr int kStoreBusyTimeout_ms = 5000;
+
+/// What an SQLite result code (primary or extended) of a failed write means to
+/// the user, where it means more than SQLite's text: "in use by another process
+/// (…)" for a store another process kept locked past kStoreBusyTimeout_ms,
+/// "disk full" for a full disk or quota; empty for any other code.
+QString storeWriteCondition(int sqliteResultCode);
+
 /// How a store is opened.
 enum class StoreAccess {
     /// An existing store, read with SQLite's read-only flags: never created,

@@ -7,6 +7,8 @@
 #include <QFileInfo>
 #include <QUrl>
 
+#include "db/CampaignStore.h"
+
 namespace driftlab::db {
 namespace {
 
@@ -88,7 +90,7 @@ std::optional<StoreFileInfo> inspectStoreFile(const QString& path, QString* why)
         if (rc == SQLITE_DONE) rc = SQLITE_OK;
         sqlite3_finalize(statement);
     };
-    if (rc == SQLITE_OK) sqlite3_busy_timeout(handle, 5000);
+    if (rc == SQLITE_OK) sqlite3_busy_timeout(handle, kStoreBusyTimeout_ms);
     read("PRAGMA application_id",
          [&](sqlite3_stmt* s) { info.applicationId = quint32(sqlite3_column_int(s, 0)); });
     read("PRAGMA user_version",

@@ -6,6 +6,8 @@
 #include <QFileInfo>
 #include <QSet>
 
+#include "core/bundle/RegularFile.h"
+
 namespace driftlab::db {
 namespace {
 
@@ -45,8 +47,9 @@ private:
 };
 
 bool looksLikeZip(const QString& path) {
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) && file.read(4) == QByteArrayLiteral("PK\x03\x04");
+    QString ignored;  // a file that cannot be read is not taken for an archive
+    const auto file = openRegularFile(path, &ignored);
+    return file && file->read(4) == QByteArrayLiteral("PK\x03\x04");
 }
 
 }  // namespace
@@ -54,6 +57,10 @@ bool looksLikeZip(const QString& path) {
 std::unique_ptr<BundleSource> openBundleSource(const QString& path, QString* error) {
     const QFileInfo info(path);
     if (info.isDir() || !info.exists()) return openBundleFolder(path, error);
+    if (const QString kind = irregularFileKind(path); !kind.isEmpty()) {
+        *error = kind + QStringLiteral(", not a bundle folder or .zip archive");
+        return nullptr;
+    }
     if (!looksLikeZip(path)) {
         *error = QStringLiteral("not a bundle folder or .zip archive");
         return nullptr;

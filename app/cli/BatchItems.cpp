@@ -5,6 +5,7 @@
 #include <QFileInfo>
 
 #include "app/cli/CliCommon.h"
+#include "core/bundle/BundleWriter.h"
 #include "db/CampaignStore.h"
 
 namespace driftlab::cli {
@@ -12,9 +13,13 @@ namespace {
 
 const QStringList kAnalyses{kAnalysisInfo, kAnalysisIso230_2, kAnalysisFit, kAnalysisDiagnose};
 
+/// A folder with a campaign.json of any kind, or an export's staging folder:
+/// a campaign.json that is not a regular file (a FIFO), and a staging folder,
+/// are the bundle reader's to refuse, with its reason.
 bool isBundleFolder(const QFileInfo& info) {
-    return info.isDir() &&
-           QFileInfo(QDir(info.filePath()), QStringLiteral("campaign.json")).isFile();
+    const QDir folder(info.filePath());
+    return info.isDir() && (QFileInfo::exists(folder.filePath(QStringLiteral("campaign.json"))) ||
+                            folder.exists(kExportLockFile));
 }
 
 bool isZip(const QFileInfo& info) {

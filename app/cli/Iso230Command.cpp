@@ -31,8 +31,8 @@ std::vector<iso::Reading> readCsv(const QString& path) {
             const auto d = directionFromText(table.text(direction));
             if (!d)
                 table.fail(direction, QStringLiteral("direction must be '+' (positive approach, "
-                                                     "↑) or '-' (negative approach, ↓), not '%1'")
-                                          .arg(table.text(direction)));
+                                                     "↑) or '-' (negative approach, ↓), not %1")
+                                          .arg(quotedCell(table.field(direction))));
             const double target_mm = table.number(target);
             if (std::abs(target_mm) > iso::kMaxTarget_mm)
                 table.fail(target, QStringLiteral("target %1 mm is beyond any machine's travel "

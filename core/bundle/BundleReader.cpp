@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/bundle/BundleParser.h"
+#include "core/bundle/BundleWriter.h"
 #include "core/bundle/CampaignJson.h"
 #include "core/bundle/ColumnSpelling.h"
 #include "core/bundle/SampleRows.h"
@@ -19,13 +20,26 @@ namespace driftlab {
 using namespace bundle_files;
 
 Campaign BundleParser::parse() {
+    // An export's staging folder may already hold some files in their final
+    // form; read as a bundle, it would lose what the export had yet to write.
+    if (m_source.contains(kExportLockFile))
+        throw BundleException(
+            {kExportLockFile, 0, 0,
+             QStringLiteral("the staging folder of an export that has not finished (killed, or "
+                            "still writing), not a bundle; the next export to the same folder "
+                            "removes a killed one")});
     QString error;
     auto json = m_source.open(kCampaign, &error);
+    // A campaign.json that is there but cannot be read (a FIFO) is named as such;
+    // without one, the folder may be something else than a bundle.
     if (!json)
         throw BundleException(
             {kCampaign, 0, 0,
-             QStringLiteral("cannot open: %1 (is this a campaign bundle?)").arg(error)});
-    m_campaign = campaignFromJson(json->readAll(), kCampaign);
+             QStringLiteral("cannot open: %1%2")
+                 .arg(error, m_source.contains(kCampaign)
+                                 ? QString()
+                                 : QStringLiteral(" (is this a campaign bundle?)"))});
+    m_campaign = campaignFromJson(json->readAll(), kCampaign, &warnings);
     for (std::size_t i = 0; i < m_campaign.runs.size(); ++i)
         m_runIndex.insert(m_campaign.runs[i].id, int(i));
     setPositionLimits();
@@ -55,9 +69,8 @@ std::unique_ptr<CsvTable> BundleParser::openCsv(const QString& name) {
 std::size_t BundleParser::runOf(const CsvTable& csv, int column) {
     auto it = m_runIndex.find(csv.text(column));
     if (it == m_runIndex.end())
-        csv.fail(
-            column,
-            QStringLiteral("unknown run id '%1' (not in campaign.json)").arg(csv.text(column)));
+        csv.fail(column, QStringLiteral("unknown run id %1 (not in campaign.json)")
+                             .arg(quotedCell(csv.field(column))));
     return std::size_t(*it);
 }
 
@@ -81,7 +94,7 @@ void BundleParser::checkPosition(const CsvTable& csv, int column, double positio
     if (position_mm < m_positionMin_mm || position_mm > m_positionMax_mm)
         csv.fail(column, QStringLiteral("%1 = %2 mm lies beyond the screw [%3, %4] mm "
                                         "(unit mix-up? positions are in mm)")
-                             .arg(csv.header()[std::size_t(column)])
+                             .arg(shownText(csv.header()[std::size_t(column)]))
                              .arg(numberText(position_mm))
                              .arg(numberText(m_positionMin_mm))
                              .arg(numberText(m_positionMax_mm)));
@@ -118,14 +131,14 @@ const Channel* BundleParser::sampleChannel(const CsvTable& csv, int column,
     const std::optional<HeaderWithUnit> withUnit = splitHeaderUnit(header);
     const Channel* channel = withUnit ? m_campaign.findChannel(withUnit->id) : nullptr;
     if (!channel)
-        throw BundleException(
-            {kSamples, 1, column + 1,
-             QStringLiteral("column '%1' is not a channel declared in %2").arg(header, kCampaign)});
+        throw BundleException({kSamples, 1, column + 1,
+                               QStringLiteral("column %1 is not a channel declared in %2")
+                                   .arg(quotedText(header), kCampaign)});
     QString why;
     const auto conversion = conversionToDriftLabUnit(channel->quantity, withUnit->unit, &why);
     if (!conversion)
-        throw BundleException(
-            {kSamples, 1, column + 1, QStringLiteral("column '%1': %2").arg(header, why)});
+        throw BundleException({kSamples, 1, column + 1,
+                               QStringLiteral("column %1: %2").arg(quotedText(header), why)});
     *unit = *conversion;
     return channel;
 }
@@ -139,7 +152,7 @@ QString BundleParser::axisColumnOf(const QString& header) {
 }
 
 void BundleParser::check(const CsvTable& csv, int column, const std::optional<QString>& why) {
-    if (why) csv.fail(column, QStringLiteral("column '%1': %2").arg(csv.header()[column], *why));
+    if (why) csv.fail(column, QStringLiteral("column %1: %2").arg(csv.columnName(column), *why));
 }
 
 void BundleParser::reportProgress(const CsvTable& csv, double begin, double span) {
@@ -165,9 +178,9 @@ void BundleParser::readSamples() {
         const QString name = channel ? channel->id : axisColumnOf(csv.header()[i]);
         const auto& columns = m_campaign.sample_columns;
         if (std::find(columns.begin(), columns.end(), name) != columns.end())
-            throw BundleException(
-                {kSamples, 1, int(i) + 1,
-                 QStringLiteral("column '%1' is channel '%2' again").arg(csv.header()[i], name)});
+            throw BundleException({kSamples, 1, int(i) + 1,
+                                   QStringLiteral("column %1 is channel %2 again")
+                                       .arg(csv.columnName(int(i)), quotedText(name))});
         dataCols.push_back(int(i));
         channels.push_back(channel);
         units.push_back(unit);
@@ -215,8 +228,8 @@ void BundleParser::readSamples() {
         const double t = onRunClock(raw_s, *offset_s[runIndex]);
         check(csv, timeCol, impossibleTime(t));
         if (t < last.time_s)
-            csv.fail(timeCol, QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
-                                  .arg(m_campaign.runs[runIndex].id)
+            csv.fail(timeCol, QStringLiteral("time goes backwards in run %1 (%2 s after %3 s)")
+                                  .arg(quotedText(m_campaign.runs[runIndex].id))
                                   .arg(numberText(t))
                                   .arg(numberText(last.time_s)));
         bool anyValue = false;
@@ -298,8 +311,8 @@ void BundleParser::moveOntoRunClocks(const std::vector<std::optional<double>>& o
         const double offset = offset_s[r].value_or(0.0);
         if (!offset) continue;
         moveOntoRunClock(m_campaign.runs[r], offset);
-        moved << QStringLiteral("'%1' at %2 s%3")
-                     .arg(m_campaign.runs[r].id, numberText(offset),
+        moved << QStringLiteral("%1 at %2 s%3")
+                     .arg(quotedText(m_campaign.runs[r].id), numberText(offset),
                           offset >= 1e9
                               ? QStringLiteral(" (the clock read %1)")
                                     .arg(QDateTime::fromSecsSinceEpoch(qint64(offset), Qt::UTC)

@@ -4,6 +4,8 @@
 #include <QDir>
 #include <QFile>
 
+#include "core/bundle/RegularFile.h"
+
 namespace driftlab {
 namespace {
 
@@ -13,12 +15,7 @@ public:
     QString location() const override { return m_dir.path(); }
     bool contains(const QString& fileName) const override { return m_dir.exists(fileName); }
     std::unique_ptr<QIODevice> open(const QString& fileName, QString* error) const override {
-        auto file = std::make_unique<QFile>(m_dir.filePath(fileName));
-        if (!file->open(QIODevice::ReadOnly)) {
-            *error = file->errorString();
-            return nullptr;
-        }
-        return file;
+        return openRegularFile(m_dir.filePath(fileName), error);
     }
     QString displayPath(const QString& fileName) const override { return m_dir.filePath(fileName); }
 

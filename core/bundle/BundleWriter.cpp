@@ -2,6 +2,7 @@
 
 #include <QDir>
 #include <QJsonDocument>
+#include <QLockFile>
 #include <QSaveFile>
 #include <QTemporaryDir>
 #include <algorithm>
@@ -28,6 +29,26 @@ std::optional<BundleError> save(const QDir& dir, const QString& name, const QByt
     if (!file.open(QIODevice::WriteOnly) || file.write(content) != content.size() || !file.commit())
         return BundleError{name, 0, 0, QStringLiteral("cannot write: ") + file.errorString()};
     return std::nullopt;
+}
+
+/// Removes the staging folders that exports to `target` left when they were
+/// killed mid-write: those holding an export lock whose owner is gone (QLockFile
+/// keeps the owner's pid and program). A folder whose lock a running export
+/// holds, or without a lock (the previous bundle moved aside, or not an
+/// export's), is left alone.
+void sweepStagingOfKilledExports(const QFileInfo& target) {
+    const QDir parent = target.absoluteDir();
+    const QString prefix = target.fileName() + QStringLiteral(".partial-");
+    for (const QString& name :
+         parent.entryList(QDir::Dirs | QDir::Hidden | QDir::NoDotAndDotDot | QDir::NoSymLinks)) {
+        QDir staged(parent.filePath(name));
+        if (!name.startsWith(prefix) || !staged.exists(kExportLockFile)) continue;
+        QLockFile lock(staged.filePath(kExportLockFile));
+        lock.setStaleLockTime(0);  // a long export is no dead one: only a gone owner counts
+        if (!lock.tryLock(0)) continue;
+        lock.unlock();
+        staged.removeRecursively();
+    }
 }
 
 QByteArray samplesCsv(const Campaign& c) {
@@ -111,10 +132,17 @@ std::optional<BundleError> writeBundle(const Campaign& campaign, const QString& 
 
     // Written beside the target, on the same file system, so that the final
     // rename is atomic; the staging folder vanishes on any failure.
+    sweepStagingOfKilledExports(target);
     QTemporaryDir staging(targetPath + QStringLiteral(".partial-XXXXXX"));
     if (!staging.isValid())
         return fail(QStringLiteral("cannot create a staging folder: ") + staging.errorString());
     const QDir dir(staging.path());
+    // Held until the bundle is complete: a reader refuses the folder while it is
+    // there, and should this process be killed, the next export removes the folder.
+    QLockFile lock(dir.filePath(kExportLockFile));
+    lock.setStaleLockTime(0);
+    if (!lock.tryLock(0))
+        return fail(QStringLiteral("cannot lock the staging folder %1").arg(staging.path()));
     const bool hasMotion = std::any_of(campaign.runs.begin(), campaign.runs.end(),
                                        [](const Run& r) { return !r.motion.empty(); });
     const bool hasPositioning = std::any_of(campaign.runs.begin(), campaign.runs.end(),
@@ -123,9 +151,6 @@ std::optional<BundleError> writeBundle(const Campaign& campaign, const QString& 
         e.file = QDir(directory).filePath(e.file);
         return e;
     };
-    if (auto e = save(dir, QStringLiteral("campaign.json"),
-                      QJsonDocument(campaignToJson(campaign)).toJson(QJsonDocument::Indented)))
-        return prefixed(*e);
     if (auto e = save(dir, QStringLiteral("samples.csv"), samplesCsv(campaign)))
         return prefixed(*e);
     if (hasMotion)
@@ -134,6 +159,13 @@ std::optional<BundleError> writeBundle(const Campaign& campaign, const QString& 
     if (hasPositioning)
         if (auto e = save(dir, QStringLiteral("positioning.csv"), positioningCsv(campaign)))
             return prefixed(*e);
+    // campaign.json last: until the bundle is complete the folder lacks the file
+    // every reader opens first, so not even a reader that knows nothing of the
+    // lock (an older build, another tool) takes a killed export's folder for one.
+    if (auto e = save(dir, QStringLiteral("campaign.json"),
+                      QJsonDocument(campaignToJson(campaign)).toJson(QJsonDocument::Indented)))
+        return prefixed(*e);
+    lock.unlock();
 
     // An empty target folder is removed so the staged one can take its name; a
     // previous bundle is moved aside first and deleted only once the new one is in place.

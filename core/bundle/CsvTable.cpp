@@ -1,6 +1,7 @@
 #include "core/bundle/CsvTable.h"
 
 #include "core/bundle/ColumnSpelling.h"
+#include "core/domain/MessageText.h"
 
 #include <csv.h>
 #include <QDateTime>
@@ -29,10 +30,6 @@ extern "C" void onRecordEnd(int, void* table) {
 /// would swallow a tab separator.
 extern "C" int isPadding(unsigned char c) {
     return c == CSV_SPACE;
-}
-
-QString quoted(std::string_view s) {
-    return QLatin1Char('\'') + QString::fromUtf8(s.data(), qsizetype(s.size())) + QLatin1Char('\'');
 }
 
 }  // namespace
@@ -64,8 +61,8 @@ CsvTable::CsvTable(std::unique_ptr<QIODevice> device, const QString& displayName
         QString name = QString::fromUtf8(cell.data(), qsizetype(cell.size()));
         if (name.isEmpty()) fail(int(i), QStringLiteral("empty column name in header"));
         if (auto it = columnOf.constFind(name); it != columnOf.cend())
-            fail(int(i), QStringLiteral("duplicate column '%1' in header (also column %2)")
-                             .arg(name)
+            fail(int(i), QStringLiteral("duplicate column %1 in header (also column %2)")
+                             .arg(quotedText(name))
                              .arg(*it + 1));
         columnOf.insert(name, int(i));
         m_header.push_back(name);
@@ -88,8 +85,9 @@ int CsvTable::column(const QString& name) const {
         if (!spellsColumn(m_header[i], name)) continue;
         if (found >= 0)
             throw BundleException({m_fileName, 1, int(i) + 1,
-                                   QStringLiteral("columns '%1' and '%2' both name '%3'")
-                                       .arg(m_header[std::size_t(found)], m_header[i], name)});
+                                   QStringLiteral("columns %1 and %2 both name '%3'")
+                                       .arg(quotedText(m_header[std::size_t(found)]),
+                                            quotedText(m_header[i]), name)});
         found = int(i);
     }
     return found;
@@ -115,13 +113,13 @@ QString CsvTable::sameQuantityInAnotherUnit(const QString& name) const {
         if (!other) continue;
         if (other->isEmpty())
             return QStringLiteral(
-                       ": it has '%1', without its unit (DriftLab reads %2 in %3: "
+                       ": it has %1, without its unit (DriftLab reads %2 in %3: "
                        "name it '%4' if it is in %3)")
-                .arg(h, stem, unit, name);
+                .arg(quotedText(h), stem, unit, name);
         return QStringLiteral(
-                   ": it has '%1', in %2 (DriftLab reads %3 in %4: convert the "
+                   ": it has %1, in %2 (DriftLab reads %3 in %4: convert the "
                    "column and name it '%5')")
-            .arg(h, *other, stem, unit, name);
+            .arg(quotedText(h), shownText(*other), stem, unit, name);
     }
     return {};
 }
@@ -246,8 +244,8 @@ bool CsvTable::next() {
         if (m_trailingSeparator && m_recordFields == m_header.size() + 1) {
             if (!field(int(m_header.size())).empty())
                 fail(int(m_header.size()),
-                     QStringLiteral("a value under the unnamed last column: '%1'")
-                         .arg(text(int(m_header.size()))));
+                     QStringLiteral("a value under the unnamed last column: %1")
+                         .arg(quotedCell(field(int(m_header.size())))));
             m_recordFields = m_header.size();
         }
         if (m_recordFields != m_header.size())
@@ -264,7 +262,7 @@ bool CsvTable::next() {
 
 double CsvTable::number(int column) const {
     if (field(column).empty())
-        fail(column, QStringLiteral("empty cell in column '%1'").arg(m_header[column]));
+        fail(column, QStringLiteral("empty cell in column %1").arg(columnName(column)));
     return numberOrMissing(column);
 }
 
@@ -279,9 +277,9 @@ double CsvTable::time(int column) const {
     if (text.size() > 10 && text[10] == QLatin1Char(' ')) text[10] = QLatin1Char('T');
     const QDateTime read = QDateTime::fromString(text, Qt::ISODateWithMs);
     if (!read.isValid())
-        fail(column, QStringLiteral("cell %1 in column '%2' is neither a number nor a date and "
+        fail(column, QStringLiteral("cell %1 in column %2 is neither a number nor a date and "
                                     "time (ISO 8601: 2026-11-18T11:06:40)")
-                         .arg(quoted(cell), m_header[column]));
+                         .arg(quotedCell(cell), columnName(column)));
     const bool zoned = read.timeSpec() != Qt::LocalTime;
     const QDateTime utc = zoned ? read.toUTC() : QDateTime(read.date(), read.time(), Qt::UTC);
     return double(utc.toMSecsSinceEpoch()) / 1000.0;
@@ -294,9 +292,9 @@ double CsvTable::numberOrMissing(int column) const {
     char buffer[64];
     if (europeanFormat() && digits.find(',') != std::string_view::npos) {
         if (digits.find('.') != std::string_view::npos || digits.size() >= sizeof buffer)
-            fail(column, QStringLiteral("cell %1 in column '%2' mixes '.' and ',': thousands "
+            fail(column, QStringLiteral("cell %1 in column %2 mixes '.' and ',': thousands "
                                         "separators are not read; export numbers without them")
-                             .arg(quoted(cell), m_header[column]));
+                             .arg(quotedCell(cell), columnName(column)));
         std::memcpy(buffer, digits.data(), digits.size());
         std::replace(buffer, buffer + digits.size(), ',', '.');
         digits = std::string_view(buffer, digits.size());
@@ -304,34 +302,47 @@ double CsvTable::numberOrMissing(int column) const {
     double value = 0;
     auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (ec == std::errc::result_out_of_range)
-        fail(column, QStringLiteral("value %1 in column '%2' is out of the range of a number")
-                         .arg(quoted(cell), m_header[column]));
+        fail(column, QStringLiteral("value %1 in column %2 is out of the range of a number")
+                         .arg(quotedCell(cell), columnName(column)));
     if (ec != std::errc() || ptr != digits.data() + digits.size())
         fail(column,
-             QStringLiteral("non-numeric cell %1 in column '%2'%3")
-                 .arg(quoted(cell), m_header[column],
+             QStringLiteral("non-numeric cell %1 in column %2%3")
+                 .arg(quotedCell(cell), columnName(column),
                       !europeanFormat() && cell.find(',') != std::string_view::npos
                           ? QStringLiteral(" (a decimal comma? use '.' in a ','-separated file)")
                           : QString()));
     if (!std::isfinite(value))
-        fail(column, QStringLiteral("NaN or infinite value %1 in column '%2'")
-                         .arg(quoted(cell), m_header[column]));
+        fail(column, QStringLiteral("NaN or infinite value %1 in column %2")
+                         .arg(quotedCell(cell), columnName(column)));
     return value;
 }
 
-int CsvTable::integer(int column) const {
+int CsvTable::integer(int column, int min, int max) const {
     std::string_view cell = field(column);
     int value = 0;
     auto [ptr, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
-    if (cell.empty() || ec != std::errc() || ptr != cell.data() + cell.size())
-        fail(column, QStringLiteral("expected an integer in column '%1', found %2")
-                         .arg(m_header[column], quoted(cell)));
+    const bool whole = !cell.empty() && ptr == cell.data() + cell.size();
+    // An integer too large for an int is still an integer: say so, with the range.
+    if (whole && (ec == std::errc::result_out_of_range ||
+                  (ec == std::errc() && (value < min || value > max))))
+        fail(column, QStringLiteral("value %1 in column %2 is out of range: an integer from %3 "
+                                    "to %4 is expected")
+                         .arg(quotedCell(cell), columnName(column))
+                         .arg(min)
+                         .arg(max));
+    if (!whole || ec != std::errc())
+        fail(column, QStringLiteral("expected an integer in column %1, found %2")
+                         .arg(columnName(column), quotedCell(cell)));
     return value;
 }
 
 QString CsvTable::text(int column) const {
     std::string_view cell = field(column);
     return QString::fromUtf8(cell.data(), qsizetype(cell.size()));
+}
+
+QString CsvTable::columnName(int column) const {
+    return quotedText(m_header[std::size_t(column)]);
 }
 
 void CsvTable::fail(int column, const QString& message) const {

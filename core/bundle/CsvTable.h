@@ -9,6 +9,7 @@
 
 #include <QString>
 #include <QStringList>
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -60,13 +61,18 @@ public:
     double number(int column) const;
     /// Like number() but an empty cell is a missing sample (NaN).
     double numberOrMissing(int column) const;
-    int integer(int column) const;
+    /// An integer within [min, max]; throws "expected an integer" or, for one
+    /// outside the range (an int's, by default), "out of range" with the range.
+    int integer(int column, int min = std::numeric_limits<int>::min(),
+                int max = std::numeric_limits<int>::max()) const;
     /// A time in s: a number, or a date and time of day as loggers write them
     /// (ISO 8601, 'T' or a space between: "2026-11-18 11:06:40.5"), read as
     /// seconds since 1970. Without a zone it is read as UTC: only differences
     /// count (a run is counted from its first record), and UTC has no jumps.
     double time(int column) const;
     QString text(int column) const;
+    /// The header of `column` as a message quotes it (MessageText.h).
+    QString columnName(int column) const;
 
     [[noreturn]] void fail(int column, const QString& message) const;
 

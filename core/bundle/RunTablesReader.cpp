@@ -61,12 +61,11 @@ void BundleParser::readMotion() {
                                .arg(numberText(m.end_s))
                                .arg(numberText(m.start_s)));
         if (!run.motion.empty() && m.start_s < run.motion.back().end_s)
-            csv.fail(c[1],
-                     QStringLiteral("time goes backwards in run '%1': segment starts at %2 s, "
-                                    "before the previous one ends (%3 s)")
-                         .arg(run.id)
-                         .arg(numberText(m.start_s))
-                         .arg(numberText(run.motion.back().end_s)));
+            csv.fail(c[1], QStringLiteral("time goes backwards in run %1: segment starts at %2 s, "
+                                          "before the previous one ends (%3 s)")
+                               .arg(quotedText(run.id))
+                               .arg(numberText(m.start_s))
+                               .arg(numberText(run.motion.back().end_s)));
         checkPosition(csv, c[3], m.from_mm, overrun);
         checkPosition(csv, c[4], m.to_mm, overrun);
         run.motion.push_back(m);
@@ -93,20 +92,19 @@ void BundleParser::readPositioning() {
         p.time_s = csv.time(c[1]);
         check(csv, c[1], impossibleClockTime(p.time_s));
         if (!run.positioning.empty() && p.time_s < run.positioning.back().time_s)
-            csv.fail(c[1], QStringLiteral("time goes backwards in run '%1' (%2 s after %3 s)")
-                               .arg(run.id)
+            csv.fail(c[1], QStringLiteral("time goes backwards in run %1 (%2 s after %3 s)")
+                               .arg(quotedText(run.id))
                                .arg(numberText(p.time_s))
                                .arg(numberText(run.positioning.back().time_s)));
-        p.cycle = csv.integer(c[2]);
-        if (p.cycle < 0) csv.fail(c[2], QStringLiteral("cycle must not be negative"));
+        p.cycle = csv.integer(c[2], 0);  // cycles count passes, from 0
         p.target_mm = csv.number(c[3]);
         checkPosition(csv, c[3], p.target_mm, overrun);
         const QString direction = csv.text(c[4]);
         const std::optional<Direction> d = directionFromText(direction);
         if (!d)
-            csv.fail(c[4], QStringLiteral("direction must be + or -, found '%1' (also read: "
+            csv.fail(c[4], QStringLiteral("direction must be + or -, found %1 (also read: "
                                           "↑ ↓, up down, pos neg, +1 -1)")
-                               .arg(direction));
+                               .arg(quotedCell(csv.field(c[4]))));
         p.direction = *d;
         if (direction != QLatin1String("+") && direction != QLatin1String("-") &&
             !otherSpellings.contains(direction)) {
@@ -132,7 +130,8 @@ void BundleParser::readPositioning() {
             largest_um = std::max(largest_um, std::abs(p.deviation_um));
         if (const auto why =
                 tinyMicrometres(run.positioning.size(), largest_um, QStringLiteral("deviations")))
-            warnings << QStringLiteral("%1: run '%2': %3").arg(kPositioning, run.id, *why);
+            warnings
+                << QStringLiteral("%1: run %2: %3").arg(kPositioning, quotedText(run.id), *why);
     }
     reportProgress(csv, 0.1, 0.1);
 }
@@ -147,7 +146,7 @@ void BundleParser::checkRunClockTimes(const std::vector<std::optional<double>>& 
         if (const auto why = impossibleTime(onRunClock(time_s, offset_s[r].value_or(0.0))))
             throw BundleException(
                 {file, last.line, last.column,
-                 QStringLiteral("run '%1': %2").arg(m_campaign.runs[r].id, *why)});
+                 QStringLiteral("run %1: %2").arg(quotedText(m_campaign.runs[r].id), *why)});
     };
     for (std::size_t r = 0; r < m_campaign.runs.size(); ++r) {
         const Run& run = m_campaign.runs[r];

@@ -16,10 +16,10 @@ void mergeInto(HeldRow& held, const std::vector<double>& row, const CsvTable& cs
             held.values[k] = row[k];
         } else if (held.values[k] != row[k]) {
             csv.fail(columns[k],
-                     QStringLiteral("column '%1' reads %2 at %3 s of run '%4', but %5 on line %6 "
+                     QStringLiteral("column %1 reads %2 at %3 s of run %4, but %5 on line %6 "
                                     "at the same time: one instant cannot have two readings")
-                         .arg(csv.header()[std::size_t(columns[k])])
-                         .arg(numberText(row[k]), numberText(held.time_s), run,
+                         .arg(csv.columnName(columns[k]))
+                         .arg(numberText(row[k]), numberText(held.time_s), quotedText(run),
                               numberText(held.values[k]))
                          .arg(held.line));
         }
@@ -38,8 +38,9 @@ QStringList DisplacementExtents::warnings(const std::vector<Run>& runs) const {
             const auto& [count, largest] = m_extent[r][k];
             if (count == 0) continue;  // not a drift probe, or not logged in this run
             if (const auto why = tinyMicrometres(
-                    count, largest, QStringLiteral("readings of '%1'").arg(m_columns[k]->id)))
-                warnings << QStringLiteral("run '%1': %2").arg(runs[r].id, *why);
+                    count, largest,
+                    QStringLiteral("readings of %1").arg(quotedText(m_columns[k]->id))))
+                warnings << QStringLiteral("run %1: %2").arg(quotedText(runs[r].id), *why);
         }
     return warnings;
 }

@@ -4,7 +4,6 @@
 // corrupt bundle reported with the reader's file:line:column reason, a hanging
 // item stopped by the time limit, the same lines whatever -j.
 #include <gtest/gtest.h>
-#include <sys/stat.h>
 
 #include <QDir>
 #include <QJsonArray>
@@ -16,6 +15,7 @@
 
 #include "tests/cli/CliRunner.h"
 #include "tests/core/BundleTestSupport.h"
+#include "tests/db/StoreTestSupport.h"
 
 using namespace driftlab::test;
 
@@ -245,12 +245,14 @@ TEST_F(BatchCli, diagnosisIsTheDiagnoseCommandsInShort) {
 }
 
 TEST_F(BatchCli, hangingItemIsStoppedByTheTimeLimitAndAMissingPathFailsAlone) {
-    // A samples.csv that never ends: a FIFO nobody writes to blocks its reader.
+    // A store another process keeps locked, readers too: its reader waits
+    // for the lock (5 s, SQLite's busy timeout), longer than the time limit.
     QTemporaryDir dir;
-    const QString hanging = dir.filePath(QStringLiteral("hanging"));
-    QDir().mkpath(hanging);
-    writeFile(hanging + "/campaign.json", readFile(lab("b") + "/campaign.json"));
-    ASSERT_EQ(mkfifo(qPrintable(hanging + "/samples.csv"), 0600), 0);
+    const QString store = dir.filePath(QStringLiteral("held.sqlite"));
+    ASSERT_TRUE(QFile::copy(lab("store.sqlite"), store));
+    const HeldStoreLock held(store, QStringLiteral("BEGIN EXCLUSIVE"));
+    ASSERT_TRUE(held.locked);
+    const QString hanging = store + QStringLiteral("#1");
     const QString missing = dir.filePath(QStringLiteral("no-such-bundle"));
     const CliResult r =
         runCli({QStringLiteral("batch"), hanging, missing, lab("b"), QStringLiteral("--what"),

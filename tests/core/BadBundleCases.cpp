@@ -299,6 +299,70 @@ const std::vector<BadBundleCase>& badBundleCases() {
              writeFile(file(d, "samples.csv"), csv);
          },
          "samples.csv:3:3", "mixes '.' and ','"},
+        // A misspelt key whose absence changes a result: the default would be used.
+        {"misspelt_expansion_coefficient",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"alpha_per_K\"", "\"alpha_perK\"");
+         },
+         "campaign.json",
+         "screw.alpha_perK: unknown key (did you mean 'alpha_per_K'? without it, alpha_per_K "
+         "would be 1.15e-05 per K)"},
+        {"misspelt_screw_length",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"length_mm\"", "\"lenght_mm\"");
+         },
+         "campaign.json", "screw.lenght_mm: unknown key (did you mean 'length_mm'?)"},
+        {"dead_path_without_its_unit",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"dead_path_mm\"", "\"dead_path\"");
+         },
+         "campaign.json",
+         "interferometer.dead_path: unknown key (did you mean 'dead_path_mm'? without it, "
+         "dead_path_mm would be 0 mm)"},
+        {"misspelt_travel",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"travel_mm\"", "\"travel_nm\"");
+         },
+         "campaign.json",
+         "travel_nm: unknown key (did you mean 'travel_mm'? without it, travel_mm would be "
+         "absent)"},
+        // A cell or value is shown escaped and shortened: the message stays one whole line.
+        {"nul_byte_in_a_cell",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,20,", QByteArray("\nS1,20,x\0y", 10));
+         },
+         "samples.csv:4:3", "non-numeric cell 'x\\0y20.08' in column 'T_nut'"},
+        {"three_megabyte_run_id",
+         [=](const QString& d) {
+             replaceInFile(file(d, "samples.csv"), "\nS1,20,",
+                           '\n' + QByteArray(3'000'000, 'A') + ",20,");
+         },
+         "samples.csv:4:1",
+         "unknown run id 'AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA…' (3000000 "
+         "bytes) (not in campaign.json)"},
+        {"terminal_escape_in_a_json_value",
+         [=](const QString& d) {
+             replaceInFile(file(d, "campaign.json"), "\"quantity\": \"speed\"",
+                           "\"quantity\": \"\\u001b[2Jspeed\"");
+         },
+         "campaign.json", "channels[7].quantity: unknown quantity '\\x1b[2Jspeed'"},
+        // An integer beyond the range of its column is no non-integer.
+        {"cycle_beyond_the_integer_range",
+         [=](const QString& d) {
+             replaceInFile(file(d, "positioning.csv"), "\nS1,0,0,0,+,0.13\n",
+                           "\nS1,0,99999999999,0,+,0.13\n");
+         },
+         "positioning.csv:2:3",
+         "value '99999999999' in column 'cycle' is out of range: an integer from 0 to 2147483647 "
+         "is expected"},
+        {"negative_cycle",
+         [=](const QString& d) {
+             replaceInFile(file(d, "positioning.csv"), "\nS1,0,0,0,+,0.13\n",
+                           "\nS1,0,-1,0,+,0.13\n");
+         },
+         "positioning.csv:2:3",
+         "value '-1' in column 'cycle' is out of range: an integer from 0 to 2147483647 is "
+         "expected"},
         {"motion_ends_before_start",
          [=](const QString& d) {
              replaceInFile(file(d, "motion.csv"), "S1,0.000,2.100,", "S1,0.000,-2.100,");

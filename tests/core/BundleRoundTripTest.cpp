@@ -1,5 +1,9 @@
 // Campaign bundles read back exactly what was written (DESIGN.md section 2).
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <QDir>
+#include <QLockFile>
 #include <QTemporaryDir>
 
 #include "core/bundle/BundleReader.h"
@@ -77,6 +81,7 @@ TEST(BundleWriter, unknownKeysAreKeptForTheToolThatWroteThem) {
                   "\"operator\": {\"name\": \"A. Engineer\"}, \"nut_length_mm\"");
     BundleReadResult read = readBundle(dir.path());
     ASSERT_TRUE(read.ok());
+    EXPECT_TRUE(read.warnings.isEmpty()) << qPrintable(read.warnings.join('\n'));
     EXPECT_EQ(read.campaign->extra.value(QStringLiteral("operator"))
                   .toObject()
                   .value(QStringLiteral("name")),
@@ -84,6 +89,52 @@ TEST(BundleWriter, unknownKeysAreKeptForTheToolThatWroteThem) {
     ASSERT_FALSE(writeBundle(*read.campaign, dir.filePath(QStringLiteral("out"))));
     EXPECT_TRUE(
         readFile(dir.filePath(QStringLiteral("out/campaign.json"))).contains("A. Engineer"));
+}
+
+TEST(BundleWriter, aKilledExportsStagingFolderIsRefusedAndRemovedByTheNextExportOnly) {
+    QTemporaryDir dir;
+    const QString target = dir.filePath(QStringLiteral("out"));
+    // As an export killed mid-write leaves it: locked by a process that is gone,
+    // samples.csv and motion.csv written, campaign.json (written last) not yet.
+    const QString killed = target + QStringLiteral(".partial-Kq81Zx");
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        QDir().mkpath(killed);
+        QLockFile lock(QDir(killed).filePath(kExportLockFile));
+        const bool locked = lock.tryLock(0);
+        for (const char* name : {"samples.csv", "motion.csv"})
+            QFile::copy(QDir(exampleBundlePath()).filePath(QLatin1String(name)),
+                        QDir(killed).filePath(QLatin1String(name)));
+        _exit(locked ? 0 : 1);  // no unlock: the lock file stays, as after SIGKILL
+    }
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    // One this process is writing (its lock is held): neither read nor removed.
+    const QString live = target + QStringLiteral(".partial-Lv22Yw");
+    copyBundle(exampleBundlePath(), live);
+    QLockFile liveLock(QDir(live).filePath(kExportLockFile));
+    ASSERT_TRUE(liveLock.tryLock(0));
+
+    const QString why = kExportLockFile + QStringLiteral(
+                                              ": the staging folder of an export that has not "
+                                              "finished (killed, or still writing), not a bundle; "
+                                              "the next export to the same folder removes a "
+                                              "killed one");
+    for (const QString& staged : {killed, live}) {
+        const BundleReadResult read = readBundle(staged);
+        ASSERT_FALSE(read.ok()) << qPrintable(staged);
+        EXPECT_EQ(read.error->toString(), why);
+    }
+
+    ASSERT_FALSE(writeBundle(exampleCampaign(), target));
+    EXPECT_FALSE(QFileInfo::exists(killed)) << "the killed export's folder must be removed";
+    EXPECT_TRUE(QFileInfo::exists(QDir(live).filePath(QStringLiteral("campaign.json"))))
+        << "a running export's folder must be left alone";
+    const BundleReadResult written = readBundle(target);
+    ASSERT_TRUE(written.ok()) << qPrintable(written.error->toString());
+    EXPECT_FALSE(QFileInfo::exists(QDir(target).filePath(kExportLockFile)));
 }
 
 TEST(BundleReader, rowsWithoutAnyValueAreSkippedWithAWarning) {

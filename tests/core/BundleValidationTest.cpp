@@ -1,8 +1,13 @@
 // Every bad-input class of the bundle format gives an error naming file,
 // line and column, and returns no campaign (issue #2).
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <QTemporaryDir>
+#include <chrono>
 #include <cmath>
+#include <future>
 
 #include "core/bundle/BundleReader.h"
 #include "tests/core/BadBundleCases.h"
@@ -35,6 +40,52 @@ TEST(BundleReader, missingFolderIsNamed) {
     ASSERT_TRUE(result.error);
     EXPECT_EQ(result.error->toString(),
               QStringLiteral("/nonexistent/bundle: no such bundle folder or archive"));
+}
+
+TEST(BundleReader, aFifoInTheBundleIsRefusedWithoutWaitingForAWriter) {
+    for (const char* name : {"campaign.json", "samples.csv", "positioning.csv", "motion.csv"}) {
+        QTemporaryDir dir;
+        copyBundle(exampleBundlePath(), dir.path());
+        const QByteArray fifo = QFile::encodeName(dir.filePath(QLatin1String(name)));
+        ASSERT_EQ(unlink(fifo.constData()), 0);
+        ASSERT_EQ(mkfifo(fifo.constData(), 0644), 0);
+        auto read = std::async(std::launch::async, [&] { return readBundle(dir.path()); });
+        if (read.wait_for(std::chrono::seconds(20)) != std::future_status::ready) {
+            // A writer that closes at once ends the reader's wait, so the test can end.
+            const int fd = open(fifo.constData(), O_WRONLY | O_NONBLOCK);
+            if (fd >= 0) close(fd);
+            ADD_FAILURE() << "the reader waited for a writer on " << name;
+        }
+        const BundleReadResult result = read.get();
+        ASSERT_TRUE(result.error) << name;
+        EXPECT_EQ(result.error->toString(),
+                  QLatin1String(name) +
+                      QStringLiteral(": cannot open: a FIFO (named pipe), not a regular file"));
+    }
+}
+
+TEST(BundleReader, unknownKeysInTheFormatsObjectsAreNamedAndKept) {
+    QTemporaryDir dir;
+    copyBundle(exampleBundlePath(), dir.path());
+    const QString json = dir.filePath(QStringLiteral("campaign.json"));
+    replaceInFile(json, "\"axis\": \"X\",", "\"axis\": \"X\", \"serial\": \"4711\",");
+    replaceInFile(json, "\"kind\": \"moving\",", "\"kind\": \"moving\", \"feed\": 8000,");
+    // Top level: another tool's key without a word, a near miss of a given key named.
+    replaceInFile(json, "\"nut_length_mm\"",
+                  "\"tool\": \"x\", \"nut_lenght_mm\": 80, \"nut_length_mm\"");
+    const BundleReadResult read = readBundle(dir.path());
+    ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
+    EXPECT_EQ(read.warnings,
+              QStringList({QStringLiteral("campaign.json: nut_lenght_mm: unknown key, kept as is "
+                                          "(did you mean 'nut_length_mm'?)"),
+                           QStringLiteral("campaign.json: machine.serial: unknown key, kept as is "
+                                          "(the format's keys here: name, axis, controller)"),
+                           QStringLiteral("campaign.json: runs[0].feed: unknown key, kept as is "
+                                          "(did you mean 'feed_mm_min'?)")}));
+    EXPECT_EQ(read.campaign->machine.extra.value(QStringLiteral("serial")).toString(),
+              QStringLiteral("4711"));
+    EXPECT_EQ(read.campaign->runs[0].extra.value(QStringLiteral("feed")).toInt(), 8000);
+    EXPECT_EQ(read.campaign->extra.value(QStringLiteral("tool")).toString(), QStringLiteral("x"));
 }
 
 TEST(BundleReader, feedAxisRunWithoutScrewIsRejected) {

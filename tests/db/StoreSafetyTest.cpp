@@ -2,10 +2,13 @@
 // read-only connections that leave nothing behind, and creates a new store
 // only once it is complete (DESIGN.md section 3).
 #include <gtest/gtest.h>
+#include <QElapsedTimer>
 #include <QSqlQuery>
 #include <QTemporaryDir>
 
 #include "core/bundle/BundleReader.h"
+#include "core/bundle/BundleWriter.h"
+#include "db/CampaignImport.h"
 #include "db/CampaignStore.h"
 #include "db/SchemaMigrations.h"
 #include "tests/core/BundleTestSupport.h"
@@ -250,4 +253,78 @@ TEST(StoreSafety, aReadOnlyOpenNeverMigrates) {
     auto migrated = CampaignStore::open(v0, StoreAccess::ReadWrite, &error);
     ASSERT_TRUE(migrated) << qPrintable(error);
     EXPECT_EQ(db::schemaVersion(migrated->database()), db::latestSchemaVersion());
+}
+
+TEST(StoreSafety, aStoreLockedByAnotherProcessIsWaitedForThenNamedAsInUse) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("lab.sqlite"));
+    writeExampleStore(path);
+    const QByteArray before = sha256OfFile(path);
+    const QString inUse = path + QStringLiteral(
+                                     ": in use by another process (it kept the store locked for "
+                                     "more than 5 s); the store is unchanged");
+    {
+        // The switch into WAL mode, which SQLite does not wait for by itself.
+        const HeldStoreLock held(path, QStringLiteral("BEGIN IMMEDIATE"));
+        ASSERT_TRUE(held.locked);
+        QElapsedTimer waited;
+        waited.start();
+        QString error;
+        EXPECT_FALSE(CampaignStore::open(path, StoreAccess::ReadWrite, &error));
+        EXPECT_GE(waited.elapsed(), db::kStoreBusyTimeout_ms - 100) << "the busy timeout applies";
+        EXPECT_EQ(error, inUse);
+    }
+    EXPECT_EQ(sha256OfFile(path), before);
+
+    // A lock taken once the store is open: the import's transaction waits as long.
+    QString error;
+    auto store = CampaignStore::open(path, StoreAccess::ReadWrite, &error);
+    ASSERT_TRUE(store) << qPrintable(error);
+    const auto source = openBundleFolder(exampleBundlePath(), &error);
+    const db::BundleCheck checked = db::checkBundle(*source);
+    ASSERT_TRUE(checked.ok()) << qPrintable(checked.error);
+    {
+        const HeldStoreLock held(path, QStringLiteral("BEGIN IMMEDIATE"));
+        ASSERT_TRUE(held.locked);
+        db::BundleImportOptions again;
+        again.again = true;
+        const db::BundleImportResult result = db::importBundle(*store, *source, checked, again);
+        EXPECT_FALSE(result.campaignId);
+        EXPECT_EQ(result.error,
+                  path + QStringLiteral(": in use by another process (it kept the store locked "
+                                        "for more than 5 s): nothing of 'X axis moving-state "
+                                        "example' was imported; the store is unchanged"));
+    }
+    EXPECT_EQ(store->listCampaigns().size(), 1u);
+}
+
+TEST(StoreSafety, anImportThatFillsTheDiskSaysSoAndLeavesTheStoreAsItWas) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("lab.sqlite"));
+    writeExampleStore(path);
+    const QString bundle = dir.filePath(QStringLiteral("big"));
+    ASSERT_FALSE(writeBundle(generatedCampaign(20'000), bundle));
+    QString error;
+    const auto source = openBundleFolder(bundle, &error);
+    const db::BundleCheck checked = db::checkBundle(*source);
+    ASSERT_TRUE(checked.ok()) << qPrintable(checked.error);
+
+    auto store = CampaignStore::open(path, StoreAccess::ReadWrite, &error);
+    ASSERT_TRUE(store) << qPrintable(error);
+    // SQLite's own stand-in for a full disk: the file may grow by two pages only.
+    QSqlQuery q(store->database());
+    ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA page_count")) && q.next());
+    ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA max_page_count = %1").arg(q.value(0).toInt() + 2)));
+    const db::BundleImportResult result = db::importBundle(*store, *source, checked);
+    EXPECT_FALSE(result.campaignId);
+    EXPECT_EQ(result.error, path + QStringLiteral(": disk full: nothing of '%1' was imported; the "
+                                                  "store is unchanged")
+                                       .arg(checked.name));
+    store.reset();
+
+    auto reopened = CampaignStore::open(path, StoreAccess::ReadOnly, &error);
+    ASSERT_TRUE(reopened) << qPrintable(error);
+    const auto campaigns = reopened->listCampaigns();
+    ASSERT_EQ(campaigns.size(), 1u);
+    EXPECT_EQ(campaigns[0].name, QStringLiteral("X axis moving-state example"));
 }

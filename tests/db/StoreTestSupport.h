@@ -72,6 +72,35 @@ inline QStringList sideFiles(const QString& path) {
     return found;
 }
 
+/// A transaction of another connection on a store, held until destroyed, as
+/// another process's would be (to a driftlab-cli under test, the test is one):
+/// `BEGIN IMMEDIATE` keeps writers out, `BEGIN EXCLUSIVE` readers too (in
+/// rollback-journal mode, the mode a store rests in).
+class HeldStoreLock {
+public:
+    HeldStoreLock(const QString& path, const QString& begin)
+        : m_name(QStringLiteral("held-") + path) {
+        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), m_name);
+        db.setDatabaseName(path);
+        locked = db.open() && QSqlQuery(db).exec(begin);
+    }
+    ~HeldStoreLock() {
+        {
+            QSqlDatabase db = QSqlDatabase::database(m_name);
+            QSqlQuery(db).exec(QStringLiteral("ROLLBACK"));
+            db.close();
+        }
+        QSqlDatabase::removeDatabase(m_name);
+    }
+    HeldStoreLock(const HeldStoreLock&) = delete;
+    HeldStoreLock& operator=(const HeldStoreLock&) = delete;
+
+    bool locked = false;
+
+private:
+    QString m_name;
+};
+
 /// Everything in a folder, hidden files included.
 inline QStringList folderEntries(const QString& dir) {
     return QDir(dir).entryList(
