@@ -10,6 +10,9 @@ namespace driftlab::procedures {
 namespace {
 
 const QStringList kOrders{QStringLiteral("linear"), QStringLiteral("pilgrim")};
+/// More ISO 230-2 targets than any axis is measured at, each a reading per
+/// cycle and direction; far below what a pass's int count and memory hold.
+constexpr double kMaxPositioningTargets = 100000;
 
 QJsonArray rangeJson(const RangeMm& r) {
     return {r.from_mm, r.to_mm};
@@ -38,6 +41,16 @@ PositioningSpec readPositioning(const QJsonObject& json, const QString& path,
         r.fail("targets_per_metre",
                QStringLiteral("ISO 230-2 asks for at least 5 targets per metre, got %1")
                    .arg(s.targets_per_metre));
+    // Checked before positioningTargets() builds them: a density or span typed
+    // a few digits too long would overflow its int count and ask for gigabytes.
+    const double count = s.targets_per_metre * (s.span_mm.to_mm - s.span_mm.from_mm) / 1000;
+    if (!(count <= kMaxPositioningTargets))
+        r.fail("targets_per_metre", QStringLiteral("%1 per metre over the span [%2, %3] mm is "
+                                                   "more than %4 targets")
+                                        .arg(s.targets_per_metre)
+                                        .arg(s.span_mm.from_mm)
+                                        .arg(s.span_mm.to_mm)
+                                        .arg(kMaxPositioningTargets));
     r.nonNegative("irregularity", s.irregularity);
     if (s.irregularity >= 0.1)
         r.fail("irregularity", QStringLiteral("must be below 0.1 (10 %% of the interval), got %1")

@@ -161,6 +161,11 @@ TEST(ProcedureValidation, everyBadValueIsRefusedNamingItsKey) {
          "procedure.positioning.span_mm: must be [from, to]"},
         {P, {"positioning", "targets_per_metre"}, 4, "procedure.positioning.targets_per_metre:"},
         {P,
+         {"positioning", "targets_per_metre"},
+         1.4e11,
+         "procedure.positioning.targets_per_metre: 1.4e+11 per metre over the span [5, 695] mm is "
+         "more than 100000 targets"},
+        {P,
          {"positioning", "irregularity"},
          0.1,
          "procedure.positioning.irregularity: must be below 0.1"},
