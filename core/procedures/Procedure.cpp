@@ -179,27 +179,32 @@ std::optional<Procedure> parseProcedure(const QJsonObject& json, QString* error)
     }
 }
 
-std::optional<Procedure> loadProcedureFile(const QString& path, QString* error) {
+std::optional<Procedure> parseProcedureJson(const QByteArray& bytes, QString* error) {
     auto failWith = [&](const QString& why) {
-        if (error) *error = path + QStringLiteral(": ") + why;
+        if (error) *error = why;
         return std::nullopt;
     };
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) return failWith(file.errorString());
     QJsonParseError parseError;
-    const QByteArray text = file.readAll();
-    const QJsonDocument doc = QJsonDocument::fromJson(text, &parseError);
+    const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
     if (parseError.error != QJsonParseError::NoError)
         return failWith(QStringLiteral("not valid JSON at offset %1: %2")
                             .arg(parseError.offset)
                             .arg(parseError.errorString()));
     if (!doc.isObject()) return failWith(QStringLiteral("a procedure must be a JSON object"));
-    if (const auto duplicate = findDuplicateJsonKey(text, QStringLiteral("procedure")))
+    if (const auto duplicate = findDuplicateJsonKey(bytes, QStringLiteral("procedure")))
         return failWith(duplicate->toString());
+    return parseProcedure(doc.object(), error);
+}
+
+std::optional<Procedure> loadProcedureFile(const QString& path, QString* error) {
     QString why;
-    auto procedure = parseProcedure(doc.object(), &why);
-    if (!procedure) return failWith(why);
-    if (error) error->clear();
+    std::optional<Procedure> procedure;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        why = file.errorString();
+    else
+        procedure = parseProcedureJson(file.readAll(), &why);
+    if (error) *error = procedure ? QString() : path + QStringLiteral(": ") + why;
     return procedure;
 }
 

@@ -5,6 +5,7 @@
 // ProcedurePlan. ISO 230-3's own numbers are not public here: every value is a
 // parameter, and the defaults below are DriftLab's choice (docs/procedures.md).
 
+#include <QByteArray>
 #include <QJsonObject>
 #include <QString>
 #include <optional>
@@ -114,6 +115,8 @@ struct Procedure {
 /// Parses and validates a procedure; nullopt with `error` naming the key
 /// ("procedure.positioning.cycles: must be at least 1, got 0").
 std::optional<Procedure> parseProcedure(const QJsonObject& json, QString* error);
+/// Parses the bytes of a procedure file (JSON); nullopt with `error` saying why.
+std::optional<Procedure> parseProcedureJson(const QByteArray& bytes, QString* error);
 /// Reads a procedure file; errors start with the path.
 std::optional<Procedure> loadProcedureFile(const QString& path, QString* error);
 QJsonObject toJson(const Procedure& procedure);

@@ -161,6 +161,11 @@ TEST(ProcedureValidation, everyBadValueIsRefusedNamingItsKey) {
          "procedure.positioning.span_mm: must be [from, to]"},
         {P, {"positioning", "targets_per_metre"}, 4, "procedure.positioning.targets_per_metre:"},
         {P,
+         {"positioning", "targets_per_metre"},
+         1.4e11,
+         "procedure.positioning.targets_per_metre: out of range: at most 1000 (a 1 mm pitch), "
+         "got 140000000000"},
+        {P,
          {"positioning", "irregularity"},
          0.1,
          "procedure.positioning.irregularity: must be below 0.1"},
