@@ -267,9 +267,10 @@ bool CampaignStore::publish(QString* error) {
     QString why;
     // Renamed with its WAL still beside it, the store would lose what the WAL holds.
     if (QFileInfo::exists(temporary + QStringLiteral("-wal")))
-        why = QStringLiteral("the new store could not be completed: its write-ahead log is "
-                             "still beside it (a full disk, or the store open elsewhere); "
-                             "nothing was stored");
+        why = QStringLiteral(
+            "the new store could not be completed: its write-ahead log is "
+            "still beside it (a full disk, or the store open elsewhere); "
+            "nothing was stored");
     else if (!QFile::rename(temporary, m_path))  // never replaces an existing file
         why = QFileInfo::exists(m_path)
                   ? QStringLiteral("a file appeared there meanwhile; nothing was stored")

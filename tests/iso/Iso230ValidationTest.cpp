@@ -11,8 +11,8 @@ namespace {
 
 using test::add;
 using test::golden3x5;
-using test::withoutMinimums;
 using test::longAxisSingleApproach;
+using test::withoutMinimums;
 
 constexpr double kRoundOffUm = 1e-12;
 
