@@ -38,10 +38,7 @@ std::vector<iso::Reading> readCsv(const QString& path) {
                 table.fail(target, QStringLiteral("target %1 mm is beyond any machine's travel "
                                                   "(±%2 mm)")
                                        .arg(numberText(target_mm), numberText(iso::kMaxTarget_mm)));
-            const int cycleNumber = table.integer(cycle);
-            if (cycleNumber < 0)
-                table.fail(cycle,
-                           QStringLiteral("cycle must not be negative, got %1").arg(cycleNumber));
+            const int cycleNumber = table.integer(cycle, 0);  // cycles count from 0
             readings.push_back({target_mm, *d, cycleNumber, table.number(deviation)});
         }
         if (readings.empty())

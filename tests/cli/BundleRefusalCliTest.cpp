@@ -54,6 +54,21 @@ QByteArray expected(const char* command, const QString& path, const char* why) {
         .toUtf8();
 }
 
+/// `info` and `import` of `bundle` both fail with `why` at `where`, and the
+/// store is untouched.
+void expectInfoAndImportRefuse(const QString& bundle, const StoreWithCampaign& store,
+                               const QString& where, const char* why) {
+    const CliResult info = runCli({QStringLiteral("info"), bundle});
+    EXPECT_EQ(info.exitCode, 1);
+    EXPECT_EQ(reason(info.err), expected("info", where, why));
+    const CliResult import =
+        runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), store.path});
+    EXPECT_EQ(import.exitCode, 1);
+    EXPECT_EQ(reason(import.err), expected("import", where, why));
+    EXPECT_EQ(sha256OfFile(store.path), store.sha256)
+        << "a refused import must not touch the store";
+}
+
 /// The one JSON line of a batch of one item.
 QJsonObject batchLine(const CliResult& r) {
     return QJsonDocument::fromJson(r.out.trimmed()).object();
@@ -72,16 +87,7 @@ TEST_P(FifoInBundle, infoImportAndBatchRefuseItByNameWithoutWaiting) {
     makeFifo(fifo);
     const char* why = "cannot open: a FIFO (named pipe), not a regular file";
 
-    const CliResult info = runCli({QStringLiteral("info"), bundle});
-    EXPECT_EQ(info.exitCode, 1);
-    EXPECT_EQ(reason(info.err), expected("info", fifo, why));
-
-    const CliResult import =
-        runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), store.path});
-    EXPECT_EQ(import.exitCode, 1);
-    EXPECT_EQ(reason(import.err), expected("import", fifo, why));
-    EXPECT_EQ(sha256OfFile(store.path), store.sha256)
-        << "a refused import must not touch the store";
+    expectInfoAndImportRefuse(bundle, store, fifo, why);
 
     const CliResult batch =
         runCli({QStringLiteral("batch"), bundle, QStringLiteral("--what"), QStringLiteral("info"),
@@ -172,15 +178,7 @@ TEST(BundleRefusalCli, aKilledExportsStagingFolderIsRefusedAndSweptByTheNextExpo
     const char* why =
         "the staging folder of an export that has not finished (killed, or still writing), not a "
         "bundle; the next export to the same folder removes a killed one";
-    const CliResult info = runCli({QStringLiteral("info"), staging});
-    EXPECT_EQ(info.exitCode, 1);
-    EXPECT_EQ(reason(info.err), expected("info", lock, why));
-    const CliResult import =
-        runCli({QStringLiteral("import"), staging, QStringLiteral("--db"), other.path});
-    EXPECT_EQ(import.exitCode, 1);
-    EXPECT_EQ(reason(import.err), expected("import", lock, why));
-    EXPECT_EQ(sha256OfFile(other.path), other.sha256)
-        << "a refused import must not touch the store";
+    expectInfoAndImportRefuse(staging, other, lock, why);
     const CliResult batch = runCli(
         {QStringLiteral("batch"), staging, QStringLiteral("--what"), QStringLiteral("info")});
     EXPECT_EQ(batch.exitCode, 1);
@@ -308,15 +306,7 @@ TEST(BundleRefusalCli, aMisspeltScrewKeyIsRefusedAndOtherUnknownKeysAreNamedOrKe
         "screw.alpha_perK: unknown key (did you mean 'alpha_per_K'? without it, alpha_per_K "
         "would be 1.15e-05 per K)";
     const QString json = QDir(bundle).filePath(QStringLiteral("campaign.json"));
-    const CliResult info = runCli({QStringLiteral("info"), bundle});
-    EXPECT_EQ(info.exitCode, 1);
-    EXPECT_EQ(reason(info.err), expected("info", json, why));
-    const CliResult import =
-        runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), store.path});
-    EXPECT_EQ(import.exitCode, 1);
-    EXPECT_EQ(reason(import.err), expected("import", json, why));
-    EXPECT_EQ(sha256OfFile(store.path), store.sha256)
-        << "a refused import must not touch the store";
+    expectInfoAndImportRefuse(bundle, store, json, why);
 
     // Where the default changes nothing, a misspelling is a warning; another
     // tool's key at the top level is kept without a word.
@@ -372,13 +362,5 @@ TEST(BundleRefusalCli, aCycleBeyondTheIntegerRangeIsNamedOutOfRangeWithTheRange)
     const char* why =
         "value '99999999999' in column 'cycle' is out of range: an integer from 0 to 2147483647 "
         "is expected";
-    const CliResult info = runCli({QStringLiteral("info"), bundle});
-    EXPECT_EQ(info.exitCode, 1);
-    EXPECT_EQ(reason(info.err), expected("info", where, why));
-    const CliResult import =
-        runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), store.path});
-    EXPECT_EQ(import.exitCode, 1);
-    EXPECT_EQ(reason(import.err), expected("import", where, why));
-    EXPECT_EQ(sha256OfFile(store.path), store.sha256)
-        << "a refused import must not touch the store";
+    expectInfoAndImportRefuse(bundle, store, where, why);
 }

@@ -169,8 +169,10 @@ TEST(Iso230Cli, theStandardsMinimumsAreRefusedOrWarnedAndNamed) {
                                        "target_mm,direction,cycle,deviation_um\n0,+,-1,2\n");
     r = iso({negative});
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_EQ(reason(r.err), "driftlab-cli iso230-2: " + negative.toUtf8() +
-                                 ":2:3: cycle must not be negative, got -1");
+    EXPECT_EQ(reason(r.err),
+              "driftlab-cli iso230-2: " + negative.toUtf8() +
+                  ":2:3: value '-1' in column 'cycle' is out of range: an integer from 0 to "
+                  "2147483647 is expected");
     const QString far = writeFile(dir, QStringLiteral("far.csv"),
                                   "target_mm,direction,cycle,deviation_um\n1e300,+,1,2\n");
     r = iso({far});
