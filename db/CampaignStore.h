@@ -1,7 +1,7 @@
 #pragma once
 // The campaign store: one SQLite file (WAL while written, foreign keys on)
 // holding campaigns, their runs and data, and what DriftLab derives from them
-// (DESIGN.md section 3). It marks itself with an application_id, never writes
+// (docs/store.md). It marks itself with an application_id, never writes
 // into another application's file, and is read with read-only connections by
 // the commands that only read. The same store can live in a database on a
 // PostgreSQL server, named by a postgresql://USER@HOST[:PORT]/DB URL (the

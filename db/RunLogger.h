@@ -1,5 +1,5 @@
 #pragma once
-// Live logging of one run into the store (DESIGN.md section 3), from the
+// Live logging of one run into the store (docs/store.md), from the
 // acquisition thread: rows, interferometer readings, motion and events are
 // kept in memory and written in one transaction at least every second
 // (commitIfDue), with a synchronous (FULL) commit, so a crash, a kill or a

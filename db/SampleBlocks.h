@@ -2,7 +2,7 @@
 // Sensor samples are stored in blocks: up to kRowsPerBlock consecutive sample
 // times of one run, all of the campaign's sample columns, in one BLOB. A row
 // per value (run, t, channel, value) costs SQLite a B-tree insert per value
-// and cannot reach the import and logging rates of DESIGN.md section 10; a
+// and cannot reach the import and logging rates of docs/benchmarks.md; a
 // block is one insert per few thousand rows, and a run reads back with a copy.
 //
 // BLOB layout (float64, little-endian): row_count times, then for each sample

@@ -1,6 +1,6 @@
 #pragma once
 // What a file is, found out without changing a byte of it, before DriftLab
-// opens it for writing (DESIGN.md section 3): a file of another application
+// opens it for writing (docs/store.md): a file of another application
 // must be refused untouched, and even `PRAGMA journal_mode = WAL` rewrites the
 // database header.
 

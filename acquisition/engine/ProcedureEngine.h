@@ -1,5 +1,5 @@
 #pragma once
-// The procedure engine (DESIGN.md section 7): plays a procedure's runs on a
+// The procedure engine (docs/acquisition.md): plays a procedure's runs on a
 // rig and logs everything into the store through db::RunLogger. A state
 // machine — idle, running, paused, aborting, finished, interrupted — whose
 // pause(), resume() and abort() may be called from any thread; run() blocks

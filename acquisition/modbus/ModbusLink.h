@@ -4,7 +4,7 @@
 // the protocol's limits, errors that name the device, the registers and the
 // system's reason. The transport differs only in how the context is opened;
 // every request goes through the same code. A context belongs to one thread
-// (DESIGN.md section 1): create the link on the thread that uses it.
+// (docs/architecture.md): create the link on the thread that uses it.
 
 #include <QString>
 #include <cstdint>

@@ -1,4 +1,4 @@
-// batch: many campaigns analysed at once (DESIGN.md section 9; docs/batch.md).
+// batch: many campaigns analysed at once (docs/batch.md).
 // One JSON line per item on stdout, in the order of the items (the PATHs as
 // given, a searched folder's finds by path), so that two runs can be diffed
 // whatever -j was; progress on stderr; exit 1 when any item failed.

@@ -22,7 +22,7 @@
 namespace driftlab::cli {
 namespace {
 
-/// The model batch fits: the one that should carry across moving states (DESIGN.md section 5).
+/// The model batch fits: the one that should carry across moving states (docs/models.md).
 const QString kBatchModel = QStringLiteral("heat-transfer");
 
 /// `iso230-2 --json`'s axis values for the default positioning run, without

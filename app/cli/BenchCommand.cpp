@@ -1,4 +1,4 @@
-// bench: the performance figures of DESIGN.md section 10, measured here and
+// bench: the performance figures of docs/benchmarks.md, measured here and
 // now on this machine (medians of several repetitions).
 #include <QElapsedTimer>
 #include <QFile>

@@ -136,7 +136,7 @@ const std::vector<Command>& commands() {
                         ".zip bundles, stores (each campaign in them) and folders searched for "
                         "them, N at a time in separate processes.")},
         {QStringLiteral("bench"), benchCommand, QStringLiteral("bench [--json]"),
-         QStringLiteral("The performance figures of DESIGN.md section 10, measured on this "
+         QStringLiteral("The performance figures of docs/benchmarks.md, measured on this "
                         "machine.")},
         {QStringLiteral("batch-item"), batchItemCommand,
          QStringLiteral("batch-item BUNDLE [--what LIST]"),

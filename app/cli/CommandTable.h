@@ -1,5 +1,5 @@
 #pragma once
-// The commands of driftlab-cli (DESIGN.md section 9), built or not: one table
+// The commands of driftlab-cli (docs/cli.md), built or not: one table
 // that the usage, `help COMMAND`, every command's --help and the dispatch read.
 
 #include <QString>
@@ -13,8 +13,8 @@ enum ExitCode : int { kExitOk = 0, kExitFailure = 1, kExitUsage = 2, kExitNotBui
 
 struct Command {
     QString name;
-    /// Takes the arguments from the command name on; null for a command of
-    /// DESIGN.md that this version does not have yet.
+    /// Takes the arguments from the command name on; null for a command this
+    /// build lists but does not have (exit kExitNotBuilt).
     int (*run)(const QStringList& args) = nullptr;
     QString synopsis;  ///< e.g. "import BUNDLE --db FILE"
     QString summary;   ///< what it does, one line; also the first line of its --help
@@ -23,7 +23,7 @@ struct Command {
     bool hidden = false;
 };
 
-/// Every command, in the order of DESIGN.md section 9.
+/// Every command, in the order of docs/cli.md.
 const std::vector<Command>& commands();
 /// The command of that name, or null.
 const Command* findCommand(const QString& name);

@@ -1,6 +1,6 @@
 // compensate: a pitch-error compensation table from a run's positioning
 // readings (the cold geometric error, ISO 230-2 mean deviations), written for
-// a controller (DESIGN.md sections 8 and 9; docs/compensation.md).
+// a controller (docs/compensation.md, docs/cli.md).
 #include <QFileInfo>
 #include <QJsonArray>
 #include <algorithm>

@@ -1,5 +1,5 @@
 // diagnose: what the simulation gets wrong, the cause, the extension and its
-// gain (DESIGN.md section 6), as the JSON scripts rely on.
+// gain (docs/diagnosis.md), as the JSON scripts rely on.
 #include <QDir>
 #include <QJsonArray>
 

@@ -1,4 +1,4 @@
-// health: sensor self-diagnosis of a campaign's logged samples (DESIGN.md §7,
+// health: sensor self-diagnosis of a campaign's logged samples (docs/sensor-health.md,
 // docs/sensor-health.md): per run and channel, what was found (out of range,
 // frozen, spikes, rate of change, redundant drift), how many samples and when.
 // Findings are results, not failures: the exit code is 0 either way and

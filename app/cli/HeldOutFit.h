@@ -59,7 +59,7 @@ struct HeldOutFit {
 
 /// Fits `modelName` on `train` and scores it on `test`. Without `train`: the
 /// first modelled run that is not a test run; without `test`: every other
-/// modelled run (DESIGN.md section 5). `target` is a drift channel, or empty
+/// modelled run (docs/models.md). `target` is a drift channel, or empty
 /// for the positioning error. `progress` labels stderr progress, when given.
 /// Throws CliError (exit 2 for an unknown model, 1 when the fit fails).
 HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,

@@ -1,4 +1,4 @@
-// bench: import of a large samples.csv (DESIGN.md section 10: ≥ 1.5 million
+// bench: import of a large samples.csv (docs/benchmarks.md: ≥ 1.5 million
 // samples/s, peak memory ≤ 1.5 × the CSV). The import runs as a user runs it,
 // `driftlab-cli import` in a child process, so that its peak memory is its own
 // (wait4's ru_maxrss), not the benchmark's.

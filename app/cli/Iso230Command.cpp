@@ -1,5 +1,5 @@
 // iso230-2: ISO 230-2 evaluation of positioning readings from a CSV file or
-// from a run of a campaign (DESIGN.md section 9; docs/iso230.md).
+// from a run of a campaign (docs/iso230.md).
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>

@@ -1,4 +1,4 @@
-// live: live thermal compensation (DESIGN.md §8) replayed on a measured run.
+// live: live thermal compensation (docs/live-compensation.md) replayed on a measured run.
 // The heat-transfer model is fitted on the training runs; the replayed run's
 // ambient, torque and motion then drive it online, step by step, and every
 // update it applies (only between cuts, limited per update) is printed and,

@@ -1,4 +1,4 @@
-// bench: the live logger's sustained rate (DESIGN.md section 10): rows of a
+// bench: the live logger's sustained rate (docs/benchmarks.md): rows of a
 // 16-column campaign appended through db::RunLogger, which commits at least
 // every second with a synchronous commit in WAL mode, against a bare sqlite3
 // bulk insert of the same rows (one prepared INSERT per row, one

@@ -1,4 +1,4 @@
-// fit and compare: thermal-error models on a campaign (DESIGN.md sections 5, 9).
+// fit and compare: thermal-error models on a campaign (docs/models.md and docs/cli.md).
 #include <QJsonArray>
 #include <cmath>
 

@@ -1,5 +1,5 @@
 // report: the acceptance report of a campaign as PDF, HTML and/or CSV
-// (DESIGN.md section 9; docs/report.md). The data comes from core/report,
+// (docs/report.md). The data comes from core/report,
 // the pages from ui/report; this file only wires options to them.
 #include <QDateTime>
 #include <QElapsedTimer>

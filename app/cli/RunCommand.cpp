@@ -1,4 +1,4 @@
-// run: a test procedure on a rig, logged live into a store (DESIGN.md section 7).
+// run: a test procedure on a rig, logged live into a store (docs/acquisition.md).
 // Progress on stderr, the campaign id on stdout; Ctrl-C aborts cleanly (the
 // run is kept, marked interrupted, and `--resume RUN` continues it). Into a
 // server store it logs into a local spool that an uploader copies to the

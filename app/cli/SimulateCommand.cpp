@@ -1,4 +1,4 @@
-// simulate: a whole campaign from the simulated rig (DESIGN.md sections 4, 7).
+// simulate: a whole campaign from the simulated rig (docs/physics.md and docs/acquisition.md).
 #include <QDir>
 #include <QJsonArray>
 #include <map>

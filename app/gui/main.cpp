@@ -1,4 +1,4 @@
-// driftlab: the desktop application (DESIGN.md section 9). Wiring only: the
+// driftlab: the desktop application (docs/gui-setup.md). Wiring only: the
 // window and its pages are in ui/.
 //
 //   driftlab [STORE]          open a store (else the last one)

@@ -1,5 +1,5 @@
 #pragma once
-// Reads a campaign bundle (DESIGN.md section 2) from a folder or, through
+// Reads a campaign bundle (docs/bundles.md) from a folder or, through
 // db/ZipBundleSource, a zip archive: campaign.json, samples.csv, and the
 // optional motion.csv and positioning.csv.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The format's fixed columns (DESIGN.md §2: run, time_s, target_mm,
+// The format's fixed columns (docs/bundles.md: run, time_s, target_mm,
 // deviation_um, feed_mm_min, …) as other software spells them in a header:
 // in another case ("Time_s", "RUN") or with the unit in brackets or
 // parentheses, as loggers and laser packages write it ("time [s]",

@@ -1,5 +1,5 @@
 // motion.csv and positioning.csv: the motion programme actually run and the
-// interferometer's readings (DESIGN.md section 2), read before samples.csv.
+// interferometer's readings (docs/bundles.md), read before samples.csv.
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@ namespace driftlab {
 namespace {
 
 /// Whether a moving run's readings, on the run's clock, have no cycle 0 and
-/// begin with a whole pass of cycle 1 at its start, where DESIGN.md §2 puts
+/// begin with a whole pass of cycle 1 at its start, where docs/bundles.md puts
 /// cycle 0. A run that lost its cold pass starts with cycle 1 later, warm.
 bool firstPassIsCycleOneAtTheStart(const Run& run) {
     const auto& readings = run.positioning;

@@ -1,5 +1,5 @@
 #pragma once
-// Live thermal compensation (DESIGN.md §8): the screw model runs online, one
+// Live thermal compensation (docs/live-compensation.md): the screw model runs online, one
 // step per sample interval, and at a set update interval turns its thermal
 // error into a correction: a table over the travel (for a controller that
 // takes a table) and one offset at the working position (for an external

@@ -1,5 +1,5 @@
 #pragma once
-// The library of candidate effects of DESIGN.md section 6: each a physical
+// The library of candidate effects of docs/diagnosis.md: each a physical
 // extension of the base heat-transfer model with the free parameters its
 // physics needs (a speed exponent, a time constant, a sensitivity), refitted
 // on the training runs by the same Ceres identification. Effects compose: the

@@ -1,6 +1,6 @@
 #pragma once
 // What the simulation gets wrong, its cause, the extended model and its gain
-// (DESIGN.md section 6): fit the base heat-transfer model on training runs,
+// (docs/diagnosis.md): fit the base heat-transfer model on training runs,
 // refit every candidate effect, score all on held-out runs on the quantity
 // each effect shows in, name the cause when its gain is real and significant
 // and it explains most of what the base model leaves; then test the rest again

@@ -1,6 +1,6 @@
 #pragma once
 // A thermal test campaign on one feed axis: machine, screw, sensors and runs.
-// Mirrors campaign.json of the bundle format (DESIGN.md section 2).
+// Mirrors campaign.json of the bundle format (docs/bundles.md).
 
 #include <QJsonObject>
 #include <QString>

@@ -35,7 +35,7 @@ QString toString(Quantity quantity);
 QString toString(ChannelRole role);
 std::optional<Quantity> quantityFromString(const QString& text);
 std::optional<ChannelRole> roleFromString(const QString& text);
-/// The unit every value of this quantity is stored in (DESIGN.md section 1).
+/// The unit every value of this quantity is stored in (docs/architecture.md).
 QString unitOf(Quantity quantity);
 /// Whether a role makes sense for a quantity (e.g. `nut` is a temperature role).
 bool roleAllowedFor(Quantity quantity, ChannelRole role);

@@ -1,7 +1,7 @@
 #pragma once
 // What the machine is doing, as its controller reports it. A compensation
 // table or a live offset changes only when the machine is not cutting: a
-// correction that moves the tool mid-cut marks the workpiece (DESIGN.md §8).
+// correction that moves the tool mid-cut marks the workpiece (docs/compensation.md).
 
 #include <QString>
 

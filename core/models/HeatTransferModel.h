@@ -1,5 +1,5 @@
 #pragma once
-// heat-transfer: the screw simulation of DESIGN.md section 4 with its heat
+// heat-transfer: the screw simulation of docs/physics.md with its heat
 // coefficients identified by Ceres from the temperatures on the screw and the
 // positioning errors jointly. Physics generalises across moving states where
 // regressions on temperatures do not: the headline of the cross-state matrix.

@@ -1,6 +1,6 @@
 #pragma once
 // Scoring models on held-out runs, and the cross-state matrix (fit on one
-// moving state, score on every other): the headline comparison of DESIGN.md §5.
+// moving state, score on every other): the headline comparison of docs/models.md.
 
 #include <Eigen/Core>
 #include <QString>

@@ -1,6 +1,6 @@
 #pragma once
 // Sensorless model: the thermal error of a feed axis from its drive alone, no
-// sensor on the machine. The screw simulation of DESIGN.md section 4 driven by
+// sensor on the machine. The screw simulation of docs/physics.md driven by
 // what the controller and the drive know: the motion (nut and bearing friction
 // heat ∝ screw speed) and the logged motor torque (motor heat ∝ torque², into
 // the fixed end); c_nut, c_b and h are identified by Ceres on positioning

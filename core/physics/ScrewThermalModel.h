@@ -1,6 +1,6 @@
 #pragma once
-// One-dimensional transient conduction along the ball screw (DESIGN.md
-// section 4), finite volumes with implicit θ-stepping:
+// One-dimensional transient conduction along the ball screw (docs/physics.md),
+// finite volumes with implicit θ-stepping:
 //
 //   ρ c A ∂T/∂t = k A ∂²T/∂x² − h P (T − T_amb(t)) + q_nut(x,t) + q_bearings(x,t)
 //

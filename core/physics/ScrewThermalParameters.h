@@ -1,5 +1,5 @@
 #pragma once
-// Everything the screw simulation of DESIGN.md section 4 needs: geometry,
+// Everything the screw simulation of docs/physics.md needs: geometry,
 // material, heat-source coefficients, convection and numerics. SI units inside
 // the physics (m, s, W, K); the axis coordinate of the fixed end is in mm
 // because motion segments are logged in mm.

@@ -1,5 +1,5 @@
 #pragma once
-// A test procedure as data (DESIGN.md section 7): what the engine drives and
+// A test procedure as data (docs/procedures.md): what the engine drives and
 // logs. Read from the JSON files in resources/procedures/ by
 // parseProcedure(); planned into runs (motion and interferometer readings) by
 // ProcedurePlan. ISO 230-3's own numbers are not public here: every value is a

@@ -1,6 +1,6 @@
 #pragma once
 // The effects the simulated rig can hide in a campaign: one per cause id of the
-// diagnosis (DESIGN.md section 6), each with a magnitude in physical units.
+// diagnosis (docs/diagnosis.md), each with a magnitude in physical units.
 
 #include <QString>
 #include <QStringList>

@@ -137,7 +137,7 @@ struct SimulatedAxisRun::State {
 
     void logSample(double at_s, RunOutput& out) {
         const AxisState axis = axisStateAt(programme.motion, at_s);
-        // Bearing-seat sensors read the screw where they sit (DESIGN.md §4).
+        // Bearing-seat sensors read the screw where they sit (docs/physics.md).
         const double truth[] = {screw.temperatureUnderNut_C(axis.position_mm),
                                 screw.temperatureAt_C(screw.screwCoordinate_m(fixedSeat_mm)),
                                 screw.temperatureAt_C(screw.screwCoordinate_m(freeSeat_mm)),

@@ -1,5 +1,5 @@
 #pragma once
-// Sensor self-diagnosis of logged data (DESIGN.md section 7): the batch form
+// Sensor self-diagnosis of logged data (docs/sensor-health.md): the batch form
 // of ChannelHealthChecker over a SampleSeries column, and the drift check of
 // two redundant sensors (two channels declared to measure the same place).
 

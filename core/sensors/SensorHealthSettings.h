@@ -1,5 +1,5 @@
 #pragma once
-// Sensor self-diagnosis (DESIGN.md section 7): what can be wrong with a
+// Sensor self-diagnosis (docs/sensor-health.md): what can be wrong with a
 // sensor's readings, one bit per kind, and the named thresholds of every check.
 // A bad sample is flagged, never altered or dropped: what to do with it is the
 // caller's decision (models, database and GUI are not part of this module).
@@ -39,7 +39,7 @@ QString toString(SensorFault fault);
 /// The ids of every kind set in `flags`.
 QStringList toStringList(SensorFlags flags);
 
-/// Thresholds of the checks. Defaults fit the rig of DESIGN.md: Pt100 or
+/// Thresholds of the checks. Defaults fit a test rig's temperature sensors: Pt100 or
 /// thermocouple channels read by a module with 0.01 K resolution and about
 /// 0.02 K noise, sampled every 1–10 s. docs/sensor-health.md says why.
 struct SensorHealthSettings {

@@ -1,4 +1,4 @@
--- Schema v1: campaigns as imported from bundles (DESIGN.md sections 2 and 3).
+-- Schema v1: campaigns as imported from bundles (docs/bundles.md and docs/store.md).
 CREATE TABLE campaign (
     id INTEGER PRIMARY KEY,
     name TEXT NOT NULL,

@@ -74,7 +74,7 @@ class LiveOffset:
         # is held, not dropped: removing it is the writer's decision (enable=0).
         self.stale = (self.last_update_s is not None and self.timeout_s > 0
                       and now_s - self.last_update_s > self.timeout_s)
-        # Never change the offset mid-cut (DESIGN.md section 8): a change that
+        # Never change the offset mid-cut (docs/compensation.md): a change that
         # arrives while cutting waits for the cut to end.
         if not cutting:
             self.applied_nm = self.offset_nm if self.enable else 0

@@ -1,5 +1,5 @@
 // Identification of the heat-transfer model on the five-run rig campaign
-// (DESIGN.md section 10: < 2 s): wall time, Ceres iterations, final cost.
+// (docs/benchmarks.md: < 2 s): wall time, Ceres iterations, final cost.
 #include <benchmark/benchmark.h>
 
 #include "core/models/HeatTransferModel.h"

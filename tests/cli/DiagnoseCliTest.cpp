@@ -1,4 +1,4 @@
-// driftlab-cli diagnose: DESIGN.md section 6's JSON, plots of the residual,
+// driftlab-cli diagnose: docs/diagnosis.md's JSON, plots of the residual,
 // the adopted extension kept in the database.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// driftlab-cli iso230-2 as scripts use it: the DESIGN.md §9 JSON shape with
+// driftlab-cli iso230-2 as scripts use it: the docs/cli.md JSON shape with
 // the hand-worked golden values (tests/iso/Iso230TestData.h), CSV as real
 // tools write it, a bundle's run, and failures that name file:line:column.
 

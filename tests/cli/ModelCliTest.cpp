@@ -1,5 +1,5 @@
 // driftlab-cli fit and compare on a simulated campaign: the JSON that scripts
-// rely on (DESIGN.md section 9), fits kept in the database, clear refusals.
+// rely on (docs/cli.md), fits kept in the database, clear refusals.
 #include <gtest/gtest.h>
 
 #include <QJsonArray>

@@ -117,8 +117,8 @@ for path in glob.glob(sys.argv[1] + '/*.csv'):
 
 TEST(RealWorldBundle, aRunOnALoggersClockIsCountedFromItsFirstRecord) {
     // A logger that counts from when it was switched on: run S1 starts at
-    // 5000 s in samples.csv, motion.csv and positioning.csv alike. Before, every
-    // model refused it ("no sample between 0 s and 5000 s").
+    // 5000 s in samples.csv, motion.csv and positioning.csv alike. It imports as
+    // the plain bundle, counted from its first record, with a warning.
     QTemporaryDir dir;
     const QString bundle = dir.filePath(QStringLiteral("clock"));
     copyBundle(exampleBundlePath(), bundle);
@@ -189,8 +189,8 @@ csv.writer(open(path, 'w', newline='')).writerows(rows)
 
 TEST(RealWorldBundle, cyclesCountedFromOneWithArrowsForDirectionsImportAsThePlainBundle) {
     // An interferometer package's export: measurement cycles counted from 1,
-    // directions as ISO 230-2's arrows. Before, the models refused it ("run
-    // 'S1' has no cycle 0") and the reader refused the arrows.
+    // directions as ISO 230-2's arrows. It imports as the plain
+    // bundle (the first pass is the cold reference), with warnings.
     QTemporaryDir dir;
     const QString bundle = dir.filePath(QStringLiteral("cycles"));
     copyBundle(exampleBundlePath(), bundle);
@@ -258,7 +258,7 @@ csv.writer(open(path, 'w', newline='')).writerows(rows)
 TEST(RealWorldBundle, furtherColumnsOfAnInterferometerExportAreIgnoredWithAWarning) {
     // A laser package writes its environment sensors beside each reading, and
     // a motion log may carry a comment: not part of the format, merely unusual
-    // (DESIGN.md §2). Before, the reader refused the whole bundle.
+    // (docs/bundles.md), so the bundle reads.
     QTemporaryDir dir;
     const QString bundle = dir.filePath(QStringLiteral("further"));
     copyBundle(exampleBundlePath(), bundle);
@@ -292,8 +292,7 @@ csv.writer(open(d + 'motion.csv', 'w', newline='')).writerows(rows)
 
 TEST(RealWorldBundle, formatColumnsCapitalisedAndWithTheirUnitInBracketsAreTheFormatsOwn) {
     // Loggers and laser packages write "Time [s]", "Deviation (µm)": the
-    // format's columns, once the unit is the format's. Before, every file was
-    // refused for a "missing column 'time_s'".
+    // format's columns, once the unit is the format's.
     QTemporaryDir dir;
     const QString bundle = dir.filePath(QStringLiteral("spelled"));
     copyBundle(exampleBundlePath(), bundle);

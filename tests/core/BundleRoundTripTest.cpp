@@ -1,4 +1,4 @@
-// Campaign bundles read back exactly what was written (DESIGN.md section 2).
+// Campaign bundles read back exactly what was written (docs/bundles.md).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>

@@ -1,6 +1,6 @@
 // The store never writes into a file that is not its own, reads with
 // read-only connections that leave nothing behind, and creates a new store
-// only once it is complete (DESIGN.md section 3).
+// only once it is complete (docs/store.md).
 #include <gtest/gtest.h>
 #include <QElapsedTimer>
 #include <QSqlQuery>

@@ -3,8 +3,8 @@
 // realistic motion with overrun and dwells, its own sampling, noise, geometry
 // and channel names, effects whose form is not the candidates'). Thresholds
 // are the ones set on the rig's suite (HiddenEffectTest), unchanged. Three
-// sets: the suite; other draws of it (other machines and noise) where naming
-// rules once fell short; and the widened suite, which differs from the cause
+// sets: the suite; other draws of it (other machines and noise) on the
+// campaigns nearest a naming rule's threshold; and the widened suite, which differs from the cause
 // library as real machines do (heat entering over a region, lags of hours,
 // effects of either sign, faults on every kind of sensor, rigs with fewer
 // sensors, two or three runs, holes and jittered times in the log). One ctest

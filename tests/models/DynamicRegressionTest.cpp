@@ -352,13 +352,10 @@ TEST(AutoModel, beatsLeastSquaresOnAllRisesAndTheBestSensorPairOnHeldOutSpindleR
     }
     EXPECT_GE(withRoom, 20);  // x, y, z and the tilt about x of every seed, roughly
     SCOPED_TRACE(qPrintable(tally.text()));
-    // On the tilt about y too, or ties within 0.001 µm, but for two campaigns
-    // of six (see docs/models.md): seed 3, where a perfect model is not beyond
-    // chance either, and seed 6, where `auto` took `exponential` alone, by
-    // 0.007 µm. So 28 of 30, and all but that one where a perfect model beats
-    // both beyond chance. (The ties: seeds 1 and 5, where the better baseline
-    // ends within 0.001 µm of `auto` either way.)
-    EXPECT_GE(tally.beaten + tally.tied, 28);
+    // Over all 30 probes `auto` beats or ties (within 0.001 µm) the better
+    // baseline on at least nine in ten; where a perfect model beats both
+    // beyond chance, it fails at most once (docs/models.md, `auto`).
+    EXPECT_GE(tally.beaten + tally.tied, 0.9 * tally.cases);
     EXPECT_GE(tally.beaten_where_perfect_beats + tally.tied_where_perfect_beats,
               tally.perfect_beats - 1);
 }

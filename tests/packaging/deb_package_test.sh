@@ -19,11 +19,14 @@ set -euo pipefail
 build=$1 version=$2
 readonly skipped=77 app_id=org.driftlab.DriftLab
 
+# The steps taken are printed only when one fails: a passing test prints nothing.
+steps=()
 fail() {
+    printf '== %s\n' "${steps[@]}" >&2
     echo "FAIL: $*" >&2
     exit 1
 }
-step() { printf '== %s\n' "$*"; }
+step() { steps+=("$*"); }
 
 work=$(mktemp -d /tmp/driftlab-deb-test.XXXXXX)
 installed_by_us=false
@@ -49,7 +52,7 @@ if ((${#debs[@]} != 1)) || [[ ! -f ${debs[0]} ]]; then
     fail "expected one driftlab_*.deb, found: ${debs[*]}"
 fi
 deb=${debs[0]}
-echo "built $(basename "$deb") ($(stat -c %s "$deb") bytes)"
+step "built $(basename "$deb") ($(stat -c %s "$deb") bytes)"
 
 step "control fields (dpkg-deb -I)"
 field() { dpkg-deb -f "$deb" "$1"; }
@@ -59,7 +62,7 @@ field() { dpkg-deb -f "$deb" "$1"; }
 [[ -n $(field Maintainer) ]] || fail "no Maintainer"
 [[ $(field Description) == *"feed axes"* ]] || fail "Description: $(field Description)"
 depends=$(field Depends)
-echo "Depends: $depends"
+step "Depends: $depends"
 # One package name a line, versions and alternatives dropped.
 tr ',|' '\n' <<<"$depends" | sed 's/^ *//; s/[ (].*//' >"$work/depends.txt"
 # From dpkg-shlibdeps: the Qt libraries the executables link, and others.
@@ -161,7 +164,7 @@ id=$($cli import "$work/campaign" --db "$work/lab.sqlite" 2>"$work/import.err") 
 $cli info --db "$work/lab.sqlite" --campaign "$id" --json >"$work/stored.json"
 python3 -c 'import json,sys; a,b=(json.load(open(p)) for p in sys.argv[1:]); assert a["runs"]==b["runs"], (a["runs"], b["runs"])' \
     "$work/info.json" "$work/stored.json" || fail "the stored campaign differs from the bundle"
-echo "simulated S1, imported as campaign $id, same runs and counts from the store"
+step "simulated S1, imported as campaign $id, same runs and counts from the store"
 
 step "installed driftlab-cli: a shipped procedure run on the simulated rig"
 logged=$($cli run --procedure /usr/share/driftlab/procedures/iso230-2-x-axis.json --rig sim \
@@ -169,7 +172,7 @@ logged=$($cli run --procedure /usr/share/driftlab/procedures/iso230-2-x-axis.jso
 $cli iso230-2 --db "$work/lab.sqlite" --campaign "$logged" --json >"$work/iso.json"
 python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert r["A"] > 0, r' "$work/iso.json" ||
     fail "iso230-2 of the logged run"
-echo "logged campaign $logged, ISO 230-2 evaluated"
+step "logged campaign $logged, ISO 230-2 evaluated"
 
 step "installed driftlab: --version, --help, a start under Xvfb that saves its pages"
 gui=/usr/bin/driftlab
@@ -180,10 +183,10 @@ timeout 180 xvfb-run -a -s "-screen 0 1280x800x24" $gui --screenshots "$work/sho
     >"$work/gui.log" 2>&1 || { tail -n 20 "$work/gui.log" >&2; fail "driftlab under Xvfb"; }
 shots=("$work"/shots/gui-*.png)
 ((${#shots[@]} >= 6)) || fail "driftlab saved ${#shots[@]} pages: ${shots[*]}"
-echo "driftlab saved ${#shots[@]} pages under Xvfb"
+step "driftlab saved ${#shots[@]} pages under Xvfb"
 
 step "dpkg -r driftlab"
 installed_by_us=false
 dpkg -r driftlab >/dev/null
 [[ ! -e $cli && ! -e $gui ]] || fail "dpkg -r left the executables"
-echo "installed, used and removed $(basename "$deb")"
+step "installed, used and removed $(basename "$deb")"

@@ -1,5 +1,5 @@
 #pragma once
-// The main window (DESIGN.md section 9): the campaign tree in a dock on the
+// The main window (docs/gui-setup.md): the campaign tree in a dock on the
 // left, the pages as tabs in the centre (Set-up, Run, Models, Diagnosis,
 // Compensation, ISO 230-2), the event log in a dock below, run control in a
 // tool bar and the run state in the status bar. Window layout, the last

@@ -1,5 +1,5 @@
 #pragma once
-// The Compensation page (DESIGN.md sections 8 and 9; docs/gui-compensation.md):
+// The Compensation page (docs/gui-compensation.md):
 // a pitch-error table from a positioning run of the selected campaign (the
 // ISO 230-2 mean deviations, as `driftlab-cli compensate`), its plot, the
 // difference to the controller's active table, export to every table format,

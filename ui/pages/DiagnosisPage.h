@@ -1,5 +1,5 @@
 #pragma once
-// The Diagnosis page (DESIGN.md sections 6, 9): diagnose the selected
+// The Diagnosis page (docs/diagnosis.md and docs/gui-models.md): diagnose the selected
 // campaign off the GUI thread (progress, Cancel), show the verdict, the
 // findings with their evidence, the residual map and the before/after curves
 // of each held-out run, adopt an extension (kept as a model fit, as

@@ -1,5 +1,5 @@
 #pragma once
-// The Models page, the model workbench (DESIGN.md section 9): fit any model
+// The Models page, the model workbench (docs/gui-models.md): fit any model
 // family on chosen training runs and score it on held-out runs (parameters
 // with σ and units, scores per run, stored with the campaign), predictions
 // against measurements, and the cross-state matrix of every model. Every fit

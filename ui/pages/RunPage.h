@@ -1,5 +1,5 @@
 #pragma once
-// The Run page (DESIGN.md section 9): the pre-run checklist, run control on
+// The Run page (docs/gui-run.md): the pre-run checklist, run control on
 // the procedure engine (RunController), state and progress, and the live
 // dashboard. Its run-control actions go into the main window's tool bar, its
 // state widget into the status bar.

@@ -1,5 +1,5 @@
 #pragma once
-// The Set-up page (DESIGN.md section 9): machine, screw, travel and
+// The Set-up page (docs/gui-setup.md): machine, screw, travel and
 // interferometer, channels, procedure and rig, each a section of a list on
 // the left. Every field is checked with a message beside it and a summary
 // below; "Apply" stores the RunSetup in the Session only when nothing is

@@ -1,5 +1,5 @@
 #pragma once
-// The live dashboard of a run (DESIGN.md §9, §10 "live plots"): temperatures
+// The live dashboard of a run (docs/gui-run.md; its redraw budget in docs/benchmarks.md): temperatures
 // and the axis position over run time, the interferometer's deviation per
 // target coloured by cycle, and the thermal-error map (deviation over target
 // × time). A timer pulls at ≤ 25 Hz from the live read path — never per
