@@ -9,19 +9,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "app/cli/ConsoleOutput.h"
 #include "core/bundle/BundleSource.h"
 #include "core/domain/Campaign.h"
-#include "core/domain/Median.h"  // median of a benchmark's repetitions
 #include "db/ModelFitStore.h"
 
 namespace driftlab::cli {
-
-/// Thrown by commands; main() prints "driftlab-cli: <what>" and exits non-zero.
-struct CliError : std::runtime_error {
-    explicit CliError(const QString& why, int exitCode = 1)
-        : std::runtime_error(why.toStdString()), exitCode(exitCode) {}
-    int exitCode;
-};
 
 /// What a command takes besides its optional options, for its --help and checks.
 struct Arguments {
@@ -72,11 +65,6 @@ Campaign readBundleOrFail(const QString& path);
 /// "warning: ..." lines on stderr.
 void printWarnings(const QStringList& warnings);
 
-/// Progress "label: 42%" on stderr, rewritten in place; returns true (never cancels).
-bool printProgress(const QString& label, double fraction);
-/// Ends an unfinished progress line so that what follows starts on its own line.
-void endProgressLine();
-
 /// The value of a numeric option; throws CliError (exit 2) naming the option
 /// when it is not a finite number, or (positiveNumber) not above zero.
 double numberOption(const QCommandLineParser& parser, const QCommandLineOption& option);
@@ -87,11 +75,9 @@ QJsonValue jsonNumber(double value);
 /// "S1, S2,S3" → {S1, S2, S3}.
 QStringList runList(const QString& text);
 
-void printJson(const QJsonObject& object);
 /// Writes `text` to `path` whole or not at all (QSaveFile): a controller's
 /// file is either the old one or the new one, never half a table.
 void writeFileAtomically(const QString& path, const QByteArray& text);
-void printLine(const QString& text);
 
 /// A figure in µm (or µrad) to three decimals, "n/a" where the data cannot give it.
 QString umText(double value_um);

@@ -11,7 +11,6 @@ int simulateCommand(const QStringList& args);
 int fitCommand(const QStringList& args);
 int compareCommand(const QStringList& args);
 int diagnoseCommand(const QStringList& args);
-int benchCommand(const QStringList& args);
 int iso230Command(const QStringList& args);
 int iso230_3Command(const QStringList& args);
 int compensateCommand(const QStringList& args);
@@ -135,9 +134,6 @@ const std::vector<Command>& commands() {
          QStringLiteral("Analyse many bundles or databases, one JSON line each: bundle folders, "
                         ".zip bundles, stores (each campaign in them) and folders searched for "
                         "them, N at a time in separate processes.")},
-        {QStringLiteral("bench"), benchCommand, QStringLiteral("bench [--json]"),
-         QStringLiteral("The performance figures of docs/benchmarks.md, measured on this "
-                        "machine.")},
         {QStringLiteral("batch-item"), batchItemCommand,
          QStringLiteral("batch-item BUNDLE [--what LIST]"),
          QStringLiteral("One item of batch, analysed in the child process batch starts for it."),

@@ -1,5 +1,6 @@
 #pragma once
-// Runs driftlab-cli as a user does: a real process, its exit code, stdout and stderr.
+// Runs driftlab-cli (or driftlab-bench) as a user does: a real process, its exit code, stdout and
+// stderr.
 #include <gtest/gtest.h>
 
 #include <QJsonDocument>
@@ -17,16 +18,23 @@ struct CliResult {
     QByteArray err;
 };
 
-/// `wrapper`, when given, runs the CLI (e.g. setpriv … to run it as another user).
-inline CliResult runCli(const QStringList& args, const QStringList& wrapper = {}) {
+/// Runs `program` with `args` to its end (at most 5 min); `wrapper`, when
+/// given, runs it (e.g. setpriv … to run it as another user).
+inline CliResult runProgram(const QString& program, const QStringList& args,
+                            const QStringList& wrapper = {}) {
     QProcess p;
     if (wrapper.isEmpty())
-        p.start(QStringLiteral(DRIFTLAB_CLI), args);
+        p.start(program, args);
     else
-        p.start(wrapper.front(), wrapper.mid(1) << QStringLiteral(DRIFTLAB_CLI) << args);
-    EXPECT_TRUE(p.waitForFinished(300'000)) << "driftlab-cli " << qPrintable(args.join(' '));
+        p.start(wrapper.front(), wrapper.mid(1) << program << args);
+    EXPECT_TRUE(p.waitForFinished(300'000))
+        << qPrintable(program) << " " << qPrintable(args.join(' '));
     return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
             p.readAllStandardError()};
+}
+
+inline CliResult runCli(const QStringList& args, const QStringList& wrapper = {}) {
+    return runProgram(QStringLiteral(DRIFTLAB_CLI), args, wrapper);
 }
 
 /// The JSON object a command printed on stdout (empty when it printed none).

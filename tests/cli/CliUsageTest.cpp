@@ -15,10 +15,10 @@ using namespace driftlab::test;
 
 namespace {
 
-const QStringList kBuilt{"import",  "export",         "info",     "simulate", "fit",
-                         "compare", "diagnose",       "iso230-2", "bench",    "compensate",
-                         "pushes",  "controller-sim", "live",     "iso230-3", "health",
-                         "run",     "report",         "batch",    "sync"};
+const QStringList kBuilt{"import",         "export",   "info",     "simulate",   "fit",
+                         "compare",        "diagnose", "iso230-2", "compensate", "pushes",
+                         "controller-sim", "live",     "iso230-3", "health",     "run",
+                         "report",         "batch",    "sync"};
 
 /// The usage a refused command line shows on stderr before its reason.
 QByteArray usage() {

@@ -192,21 +192,3 @@ TEST(ModelCli, badRequestsAreRefusedWithTheReason) {
     EXPECT_EQ(missing.exitCode, 1);
     EXPECT_TRUE(reason(missing.err).contains("S9")) << missing.err.constData();
 }
-
-TEST(BenchCli, jsonCarriesTheFiguresOfDesignSection10) {
-    CliResult r =
-        runCli({QStringLiteral("bench"), QStringLiteral("--json"), QStringLiteral("--repeat"),
-                QStringLiteral("1"), QStringLiteral("--no-python"), QStringLiteral("--import-mb"),
-                QStringLiteral("4")});
-    ASSERT_EQ(r.exitCode, 0) << r.err.constData();
-    const QJsonObject figures = json(r);
-    // Figures, not verdicts: speed is judged by reading them, never by a test.
-    for (const char* key : {"simulation_cell_steps_per_s", "identification_s", "online_step_us",
-                            "diagnosis_s", "import_samples_per_s", "import_peak_rss_mb"})
-        EXPECT_GT(figures[QLatin1String(key)].toDouble(), 0) << key;
-    // The import figure really imported the file it wrote: 4 MB of 11-column rows.
-    EXPECT_GT(figures[QStringLiteral("import_samples")].toDouble(), 300'000);
-    EXPECT_GE(figures[QStringLiteral("import_csv_mb")].toDouble(), 4.0);
-    EXPECT_GT(figures[QStringLiteral("identification_iterations")].toInt(), 0);
-    EXPECT_FALSE(figures.contains(QStringLiteral("scipy_cell_steps_per_s")));
-}

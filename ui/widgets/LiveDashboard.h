@@ -1,12 +1,11 @@
 #pragma once
-// The live dashboard of a run (docs/gui-run.md; its redraw budget in docs/benchmarks.md): temperatures
-// and the axis position over run time, the interferometer's deviation per
-// target coloured by cycle, and the thermal-error map (deviation over target
-// × time). A timer pulls at ≤ 25 Hz from the live read path — never per
-// sample — and draws min/max envelopes per time bucket from
-// LiveSampleBuffer::summary, so an 8- or 24-hour run of 64 channels costs a
-// few hundred chunk summaries per channel and redraw; the rows stay in the
-// buffer and the store, the plots hold only bucket min/max.
+// The live dashboard of a run (docs/gui-run.md; its redraw budget in docs/benchmarks.md):
+// temperatures and the axis position over run time, the interferometer's deviation per target
+// coloured by cycle, and the thermal-error map (deviation over target × time). A timer pulls at ≤
+// 25 Hz from the live read path — never per sample — and draws min/max envelopes per time bucket
+// from LiveSampleBuffer::summary, so an 8- or 24-hour run of 64 channels costs a few hundred chunk
+// summaries per channel and redraw; the rows stay in the buffer and the store, the plots hold only
+// bucket min/max.
 
 #include <QTimer>
 #include <QWidget>

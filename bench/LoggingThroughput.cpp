@@ -14,12 +14,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/cli/CliCommon.h"
+#include "bench/BenchFigures.h"
 #include "core/rig/CampaignSimulator.h"
 #include "db/RunLogger.h"
 #include "db/SpoolUpload.h"
 
-namespace driftlab::cli {
+namespace driftlab::bench {
 namespace {
 
 /// Rows that look like a rig's: slow temperatures, a moving axis, some NaN.
@@ -158,4 +158,4 @@ void printLoggingLine(const QJsonObject& f) {
                            'f', 2));
 }
 
-}  // namespace driftlab::cli
+}  // namespace driftlab::bench

@@ -7,9 +7,9 @@
 
 #include "acquisition/push/TablePush.h"
 #include "acquisition/sim/SimulatedController.h"
-#include "app/cli/CliCommon.h"
+#include "bench/BenchFigures.h"
 
-namespace driftlab::cli {
+namespace driftlab::bench {
 
 QJsonObject pushFigures(int pushes) {
     push::SimulatedController controller;
@@ -39,4 +39,12 @@ QJsonObject pushFigures(int pushes) {
             {QStringLiteral("push_256_count"), pushes}};
 }
 
-}  // namespace driftlab::cli
+void printPushLine(const QJsonObject& push) {
+    printLine(QStringLiteral("push            256-point table to the simulated controller over "
+                             "Modbus TCP, %1 pushes: median %2 ms, worst %3 ms")
+                  .arg(push[QStringLiteral("push_256_count")].toInt())
+                  .arg(push[QStringLiteral("push_256_median_ms")].toDouble(), 0, 'f', 2)
+                  .arg(push[QStringLiteral("push_256_worst_ms")].toDouble(), 0, 'f', 2));
+}
+
+}  // namespace driftlab::bench

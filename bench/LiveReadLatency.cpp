@@ -11,20 +11,19 @@
 #include <vector>
 
 #include "acquisition/live/LiveSampleBuffer.h"
-#include "app/cli/CliCommon.h"
+#include "bench/BenchFigures.h"
 
-namespace driftlab::cli {
+namespace driftlab::bench {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-constexpr int kChannels = 64;
 constexpr int kBurstRows = 10;  // readings per burst
 constexpr auto kBurstPeriod = std::chrono::milliseconds(1);
 }  // namespace
 
 QJsonObject liveReadFigures(int readings) {
     QStringList columns;
-    for (int c = 0; c < kChannels; ++c) columns << QStringLiteral("T%1").arg(c + 1);
+    for (int c = 0; c < kLiveChannels; ++c) columns << QStringLiteral("T%1").arg(c + 1);
     live::LiveSampleBuffer buffer(columns);
     // Written by the producer before the row is appended, read by the reader
     // after it sees the row: the append's release store orders the two.
@@ -47,14 +46,14 @@ QJsonObject liveReadFigures(int readings) {
         }
     });
     std::thread producer([&] {
-        std::vector<double> values(kChannels);
+        std::vector<double> values(kLiveChannels);
         const Clock::time_point start = Clock::now();
         Clock::time_point burst = start;
         for (int r = 0; r < readings;) {
             std::this_thread::sleep_until(burst);
             for (int k = 0; k < kBurstRows && r < readings; ++k, ++r) {
                 readAt[std::size_t(r)] = Clock::now();
-                for (int c = 0; c < kChannels; ++c) values[c] = 20 + 0.01 * c + 1e-6 * r;
+                for (int c = 0; c < kLiveChannels; ++c) values[c] = 20 + 0.01 * c + 1e-6 * r;
                 const double t_s =
                     std::chrono::duration<double>(readAt[std::size_t(r)] - start).count();
                 if (!buffer.append(t_s, values, nullptr)) {
@@ -81,4 +80,12 @@ QJsonObject liveReadFigures(int readings) {
             {QStringLiteral("live_read_readings"), readings}};
 }
 
-}  // namespace driftlab::cli
+void printLiveReadLine(const QJsonObject& live) {
+    printLine(QStringLiteral("live read       device reading → waiting reader of the live buffer, "
+                             "%1 readings in bursts: median %2 µs, p99 %3 µs")
+                  .arg(live[QStringLiteral("live_read_readings")].toInt())
+                  .arg(live[QStringLiteral("live_read_latency_median_us")].toDouble(), 0, 'f', 1)
+                  .arg(live[QStringLiteral("live_read_latency_p99_us")].toDouble(), 0, 'f', 1));
+}
+
+}  // namespace driftlab::bench

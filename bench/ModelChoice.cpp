@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <vector>
 
-#include "app/cli/CliCommon.h"
+#include "bench/BenchFigures.h"
 #include "core/models/AutoModel.h"
 #include "core/models/DynamicRegressionModel.h"
 #include "core/rig/CampaignSimulator.h"
 
-namespace driftlab::cli {
+namespace driftlab::bench {
 namespace {
 
 /// Fit time, ms; throws CliError when the fit fails.
@@ -59,4 +59,4 @@ void printModelChoiceLine(const QJsonObject& figures) {
                   .arg(figures[QStringLiteral("arx_fit_ms")].toDouble(), 0, 'f', 0));
 }
 
-}  // namespace driftlab::cli
+}  // namespace driftlab::bench

@@ -1,5 +1,5 @@
 #pragma once
-// The simulation throughput figure of `driftlab-cli bench` and of the
+// The simulation throughput figure of driftlab-bench and of the
 // simulation_bench target: an 8-hour moving-state campaign on a 200-cell screw
 // stepped at 1 s (5.76 million cell-steps), timed over a few repetitions.
 
@@ -8,7 +8,7 @@
 #include "core/domain/Run.h"
 #include "core/physics/ScrewThermalParameters.h"
 
-namespace driftlab::physics {
+namespace driftlab::bench {
 
 /// The benchmark campaign: 8 h of reciprocating 210–490 mm at 8000 mm/min in
 /// 10 min blocks, each followed by a 100 s dwell (the dwell is a segment, as in
@@ -18,7 +18,7 @@ struct BenchmarkCampaign {
     static constexpr double kStep_s = 1;
     static constexpr int kCells = 200;
 
-    ScrewThermalParameters parameters;  ///< the default machine screw, 200 cells
+    physics::ScrewThermalParameters parameters;  ///< the default machine screw, 200 cells
     std::vector<MotionSegment> motion;
 
     BenchmarkCampaign();
@@ -39,4 +39,4 @@ struct SimulationThroughput {
 /// the medians. Takes about 0.1 s per repetition on a current desktop core.
 SimulationThroughput measureSimulationThroughput(int repetitions = 5);
 
-}  // namespace driftlab::physics
+}  // namespace driftlab::bench

@@ -1,15 +1,16 @@
 // Screw simulation throughput: one 1 s step of a 200-cell screw with the nut
 // stroking through it, and a whole 8-hour moving-state campaign at 1 s steps
-// (the figure `driftlab-cli bench` reports, from the same BenchmarkCampaign).
+// (the figure driftlab-bench reports, from the same BenchmarkCampaign).
 #include <benchmark/benchmark.h>
 
 #include <vector>
 
+#include "bench/SimulationThroughput.h"
 #include "core/physics/ScrewThermalModel.h"
-#include "core/physics/SimulationThroughput.h"
 
 using namespace driftlab;
 using namespace driftlab::physics;
+using namespace driftlab::bench;
 
 static void BM_ScrewStep200CellsWithNutStroke(benchmark::State& state) {
     const BenchmarkCampaign campaign;

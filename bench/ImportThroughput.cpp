@@ -18,12 +18,12 @@
 #include <cmath>
 #include <vector>
 
-#include "app/cli/CliCommon.h"
+#include "bench/BenchFigures.h"
 #include "core/bundle/CampaignJson.h"
 
 extern char** environ;
 
-namespace driftlab::cli {
+namespace driftlab::bench {
 namespace {
 
 /// Eight temperatures plus the axis columns, one moving run: the shape of a
@@ -109,7 +109,7 @@ struct ChildRun {
 
 /// Runs this executable with `args`, stdout and stderr to /dev/null.
 ChildRun runSelf(const QStringList& args) {
-    const QByteArray program = QCoreApplication::applicationFilePath().toLocal8Bit();
+    const QByteArray program = cliExecutable().toLocal8Bit();
     std::vector<QByteArray> storage{program};
     for (const QString& a : args) storage.push_back(a.toLocal8Bit());
     std::vector<char*> argv;
@@ -164,4 +164,4 @@ QJsonObject importFigures(int megabytes, int repetitions) {
             {QStringLiteral("import_peak_memory_ratio"), median(peaks) / csv_mb}};
 }
 
-}  // namespace driftlab::cli
+}  // namespace driftlab::bench

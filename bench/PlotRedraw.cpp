@@ -13,28 +13,27 @@
 #include <cmath>
 
 #include "acquisition/live/LiveSampleBuffer.h"
-#include "app/cli/CliCommon.h"
+#include "bench/BenchFigures.h"
 #include "ui/app/RunController.h"
 #include "ui/app/Session.h"
 #include "ui/pages/RunPage.h"
 #include "ui/widgets/LiveDashboard.h"
 #include "ui/widgets/PreRunChecklist.h"
 
-namespace driftlab::cli {
+namespace driftlab::bench {
 namespace {
 
-constexpr int kChannels = 64;
 constexpr std::int64_t kRows = 8 * 3600 * 10;  // 8 h at 10 Hz
 
 double plotRedrawMs(int repetitions) {
     QStringList columns;
-    for (int c = 0; c < kChannels; ++c) columns << QStringLiteral("T%1").arg(c + 1);
+    for (int c = 0; c < kLiveChannels; ++c) columns << QStringLiteral("T%1").arg(c + 1);
     columns << QStringLiteral("position_mm");
     auto buffer = std::make_shared<live::LiveSampleBuffer>(columns);
     std::vector<double> row(std::size_t(columns.size()));
     for (std::int64_t r = 0; r < kRows; ++r) {
         const double t_s = r * 0.1;
-        for (int c = 0; c < kChannels; ++c)
+        for (int c = 0; c < kLiveChannels; ++c)
             row[std::size_t(c)] =
                 20 + c * 0.1 + 3 * (1 - std::exp(-t_s / 7200)) + 0.05 * std::sin(r * 0.37 + c);
         row.back() = 350 + 300 * std::sin(t_s / 20);
@@ -119,4 +118,4 @@ void printPlotLine(const QJsonObject& figures) {
                   .arg(figures[QStringLiteral("gui_stall_max_ms")].toDouble(), 0, 'f', 1));
 }
 
-}  // namespace driftlab::cli
+}  // namespace driftlab::bench

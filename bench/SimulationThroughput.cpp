@@ -1,4 +1,4 @@
-#include "core/physics/SimulationThroughput.h"
+#include "bench/SimulationThroughput.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,7 +6,7 @@
 #include "core/domain/Median.h"
 #include "core/physics/ScrewThermalModel.h"
 
-namespace driftlab::physics {
+namespace driftlab::bench {
 
 BenchmarkCampaign::BenchmarkCampaign() {
     parameters.cells = kCells;
@@ -39,8 +39,8 @@ BenchmarkCampaign::BenchmarkCampaign() {
 }
 
 double BenchmarkCampaign::run() const {
-    ScrewThermalModel model(parameters, 20);
-    StepConditions c;
+    physics::ScrewThermalModel model(parameters, 20);
+    physics::StepConditions c;
     c.dt_s = kStep_s;
     c.motion = motion;
     const long n = steps();
@@ -70,4 +70,4 @@ SimulationThroughput measureSimulationThroughput(int repetitions) {
     return result;
 }
 
-}  // namespace driftlab::physics
+}  // namespace driftlab::bench

@@ -11,16 +11,16 @@
 #include <cstdio>
 #include <vector>
 
-#include "app/cli/CliCommon.h"
+#include "bench/BenchFigures.h"
 
-namespace driftlab::cli {
+namespace driftlab::bench {
 namespace {
 
 /// Runs this executable with `args`; throws CliError with its last stderr
 /// line unless it exits with `expected`.
 void runSelf(const QStringList& args, int expected = 0) {
     QProcess p;
-    p.start(QCoreApplication::applicationFilePath(), args);
+    p.start(cliExecutable(), args);
     if (!p.waitForFinished(-1) || p.exitStatus() != QProcess::NormalExit ||
         p.exitCode() != expected)
         throw CliError(QStringLiteral("batch bench: driftlab-cli %1: %2")
@@ -70,4 +70,4 @@ void printBatchLine(const QJsonObject& figures) {
                   .arg(figures[QStringLiteral("batch_campaigns")].toInt()));
 }
 
-}  // namespace driftlab::cli
+}  // namespace driftlab::bench

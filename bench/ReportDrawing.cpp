@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <vector>
 
-#include "app/cli/CliCommon.h"
+#include "bench/BenchFigures.h"
 #include "core/report/AcceptanceReportData.h"
 #include "core/rig/CampaignSimulator.h"
 #include "ui/report/ReportPdf.h"
 
-namespace driftlab::cli {
+namespace driftlab::bench {
 QJsonObject reportFigures(int repetitions) {
     const Campaign campaign = rig::simulateCampaign(rig::RigSpec{});
     report::ReportOptions options;
@@ -55,4 +55,4 @@ void printReportLine(const QJsonObject& figures) {
                   .arg(figures[QStringLiteral("report_render_ms")].toDouble(), 0, 'f', 0));
 }
 
-}  // namespace driftlab::cli
+}  // namespace driftlab::bench

@@ -1,6 +1,6 @@
 // The compensation push of a 256-point table to the simulated controller on
 // 127.0.0.1 (real Modbus TCP through libmodbus on both sides): one push per
-// iteration, connect to read-back. `driftlab-cli bench --only push` reports
+// iteration, connect to read-back. `driftlab-bench --only push` reports
 // the median and worst of 50.
 #include <benchmark/benchmark.h>
 
