@@ -1,4 +1,4 @@
-"""A simulated campaign written as a DriftLab bundle (DESIGN.md section 2)."""
+"""A simulated campaign written as a DriftLab bundle (docs/bundles.md, "The format")."""
 import json
 import math
 import os

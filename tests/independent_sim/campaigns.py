@@ -4,7 +4,7 @@
     python3 campaigns.py --out DIR [--quick] [--only NAME[,NAME...]] [--no-refit]
     python3 campaigns.py --suite widened --out DIR [--only ...] [--no-refit]   (widened.py)
 
-Each bundle is a folder in DriftLab's bundle format (DESIGN.md section 2):
+Each bundle is a folder in DriftLab's bundle format (docs/bundles.md):
 campaign.json, samples.csv, motion.csv, positioning.csv.  DIR/manifest.json
 lists every bundle with the cause ids a diagnosis should name, the true
 parameters and a description.  Everything is seeded: the same command writes

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Independent ball-screw thermal simulator (finite volumes, non-uniform grid).
 
-Physics as in DriftLab's DESIGN.md section 4, written without looking at
+Physics as DriftLab's docs/physics.md describes it, written without looking at
 DriftLab's own implementation:
 
     rho c A dT/dt = k A d2T/dx2 - h P (T - T_amb(t)) + q_nut(x,t) + q_bearings(x,t)

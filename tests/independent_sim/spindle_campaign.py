@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """ISO 230-3 spindle campaigns from a thermal network DriftLab did not write.
 
-Written from DESIGN.md (the bundle format and the channel roles) and textbook
+Written from docs/bundles.md (the bundle format and the channel roles) and textbook
 lumped-capacity heat transfer, not from core/rig: ten nodes (bearings, motor,
 rotor and shaft, housing, headstock, column skins and core) joined by thermal
 conductances, integrated with scipy's LSODA block by block. Sixteen
