@@ -71,7 +71,7 @@ qint64 writeBenchBundle(const QString& dir, int megabytes) {
     const Campaign c = benchCampaign();
     QFile json(QDir(dir).filePath(QStringLiteral("campaign.json")));
     json.open(QIODevice::WriteOnly);
-    json.write(QJsonDocument(campaignToJson(c)).toJson());
+    json.write(QJsonDocument(bundle::campaignToJson(c)).toJson());
     QFile csv(QDir(dir).filePath(QStringLiteral("samples.csv")));
     if (!csv.open(QIODevice::WriteOnly)) throw CliError(QStringLiteral("cannot write ") + dir);
     std::string out = "run,time_s";

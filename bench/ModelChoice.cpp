@@ -1,6 +1,6 @@
 // bench: `fit --model auto` on the z drift of six simulated spindle runs,
 // trained on SP1–SP3: the whole choice (every family cross-validated, the
-// winner refitted: auto_fit_ms) and the dynamic regression alone (arx_fit_ms),
+// winner refitted: auto_fit_ms) and the lagged-sensors model alone (arx_fit_ms),
 // medians.
 #include <QElapsedTimer>
 #include <algorithm>
@@ -8,7 +8,7 @@
 
 #include "bench/BenchFigures.h"
 #include "core/models/AutoModel.h"
-#include "core/models/DynamicRegressionModel.h"
+#include "core/models/LaggedSensorsModel.h"
 #include "core/rig/CampaignSimulator.h"
 
 namespace driftlab::bench {
@@ -42,7 +42,7 @@ QJsonObject modelChoiceFigures(int repetitions) {
         models::AutoModel automatic;
         autoMs.push_back(fitMs(automatic, data.runs));
         chosen = automatic.chosen();
-        models::DynamicRegressionModel arx;
+        models::LaggedSensorsModel arx;
         arxMs.push_back(fitMs(arx, data.runs));
         printProgress(QStringLiteral("model choice"), (i + 1.0) / repetitions);
     }

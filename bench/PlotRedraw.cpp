@@ -14,9 +14,9 @@
 
 #include "acquisition/live/LiveSampleBuffer.h"
 #include "bench/BenchFigures.h"
-#include "ui/app/RunController.h"
-#include "ui/app/Session.h"
 #include "ui/pages/RunPage.h"
+#include "ui/shell/RunController.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/LiveDashboard.h"
 #include "ui/widgets/PreRunChecklist.h"
 

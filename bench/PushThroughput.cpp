@@ -12,7 +12,7 @@
 namespace driftlab::bench {
 
 QJsonObject pushFigures(int pushes) {
-    push::SimulatedController controller;
+    sim::SimulatedController controller;
     QString error;
     if (!controller.start(&error)) throw CliError(QStringLiteral("push bench: ") + error);
     // Two tables in turn, so that every push really changes the active table.

@@ -18,7 +18,7 @@ namespace {
 /// Writes one campaign: metadata and runs first (begin), then sample rows as
 /// they come, then motion and positioning (finish). Throws QString on failure;
 /// the caller owns the transaction.
-class CampaignWriter : public SampleRowSink {
+class CampaignWriter : public bundle::SampleRowSink {
 public:
     explicit CampaignWriter(QSqlDatabase& db) : m_db(db) {}
 
@@ -125,7 +125,7 @@ private:
 };
 
 /// Rows are checked and dropped: the first pass of an import keeps nothing.
-class DiscardingSink : public SampleRowSink {
+class DiscardingSink : public bundle::SampleRowSink {
 public:
     void begin(const Campaign&) override {}
     void row(std::size_t, double, const double*) override {}
@@ -144,7 +144,7 @@ QString storeFailure(CampaignStore& store, const QString& name) {
 }
 
 /// "path/file:line:column: why" of a reader's error.
-QString located(const BundleSource& source, BundleError e) {
+QString located(const bundle::BundleSource& source, bundle::BundleError e) {
     e.file = source.displayPath(e.file);
     return e.toString();
 }
@@ -193,10 +193,11 @@ std::optional<qint64> CampaignStore::importCampaign(
     }
 }
 
-BundleCheck checkBundle(const BundleSource& source, const std::function<bool(double)>& progress) {
+BundleCheck checkBundle(const bundle::BundleSource& source,
+                        const std::function<bool(double)>& progress) {
     BundleCheck check;
     DiscardingSink discard;
-    const BundleReadResult read = readBundle(source, {progress, &discard});
+    const bundle::BundleReadResult read = bundle::readBundle(source, {progress, &discard});
     if (!read.ok()) {
         check.error = located(source, *read.error);
         return check;
@@ -204,13 +205,13 @@ BundleCheck checkBundle(const BundleSource& source, const std::function<bool(dou
     check.name = read.campaign->name;
     check.warnings = read.warnings;
     QString error;
-    check.contentSha256 = bundleContentSha256(source, &error);
+    check.contentSha256 = bundle::bundleContentSha256(source, &error);
     if (check.contentSha256.isEmpty())
         check.error = source.location() + QStringLiteral(": ") + error;
     return check;
 }
 
-std::optional<QString> alreadyImported(CampaignStore& store, const BundleSource& source,
+std::optional<QString> alreadyImported(CampaignStore& store, const bundle::BundleSource& source,
                                        const BundleCheck& checked) {
     QSqlQuery q(store.database());
     q.prepare(
@@ -225,7 +226,7 @@ std::optional<QString> alreadyImported(CampaignStore& store, const BundleSource&
              q.value(2).toString());
 }
 
-BundleImportResult importBundle(CampaignStore& store, const BundleSource& source,
+BundleImportResult importBundle(CampaignStore& store, const bundle::BundleSource& source,
                                 const BundleCheck& checked, const BundleImportOptions& options) {
     BundleImportResult result;
     QSqlDatabase& db = store.database();
@@ -250,7 +251,7 @@ BundleImportResult importBundle(CampaignStore& store, const BundleSource& source
         if (!options.again)
             if (auto why = alreadyImported(store, source, checked)) throw *why;
         CampaignWriter writer(db);
-        BundleReadResult read = readBundle(source, {options.progress, &writer});
+        bundle::BundleReadResult read = bundle::readBundle(source, {options.progress, &writer});
         if (!read.ok()) throw located(source, *read.error);
         const qint64 id = writer.finish(*read.campaign, checked.contentSha256);
         if (!db.commit()) throw QStringLiteral("commit failed: ") + db.lastError().text();

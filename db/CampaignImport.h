@@ -24,12 +24,12 @@ struct BundleCheck {
     QByteArray contentSha256;  ///< hex, see bundleContentSha256
     bool ok() const { return error.isEmpty(); }
 };
-BundleCheck checkBundle(const BundleSource& source,
+BundleCheck checkBundle(const bundle::BundleSource& source,
                         const std::function<bool(double)>& progress = {});
 
 /// Why `store` must not take the checked bundle again: it already holds a
 /// campaign imported from the same content (named with its id and date).
-std::optional<QString> alreadyImported(CampaignStore& store, const BundleSource& source,
+std::optional<QString> alreadyImported(CampaignStore& store, const bundle::BundleSource& source,
                                        const BundleCheck& checked);
 
 struct BundleImportOptions {
@@ -47,7 +47,7 @@ struct BundleImportResult {
 /// The second pass: the checked bundle streamed into the store in one
 /// transaction, refused when the store already holds its content (unless
 /// `again`). On any failure the transaction is rolled back.
-BundleImportResult importBundle(CampaignStore& store, const BundleSource& source,
+BundleImportResult importBundle(CampaignStore& store, const bundle::BundleSource& source,
                                 const BundleCheck& checked,
                                 const BundleImportOptions& options = {});
 

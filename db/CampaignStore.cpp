@@ -169,7 +169,7 @@ std::unique_ptr<CampaignStore> CampaignStore::open(const QString& path, StoreAcc
     QString why;
     if (file.isDir()) return fail(QStringLiteral("a folder, not a DriftLab store"));
     // Inspecting a FIFO would wait for its writer; a device is no database.
-    if (const QString kind = irregularFileKind(path); !kind.isEmpty())
+    if (const QString kind = bundle::irregularFileKind(path); !kind.isEmpty())
         return fail(kind + QStringLiteral(", not a DriftLab store"));
     if (!file.exists()) {
         if (access != StoreAccess::CreateIfMissing)

@@ -13,7 +13,7 @@ namespace {
 
 const QString kCampaignFile = QStringLiteral("campaign.json");
 
-class ZipBundleSource : public BundleSource {
+class ZipBundleSource : public bundle::BundleSource {
 public:
     ZipBundleSource(const QString& path, const QString& prefix, const QStringList& entries)
         : m_path(path), m_prefix(prefix) {
@@ -48,16 +48,16 @@ private:
 
 bool looksLikeZip(const QString& path) {
     QString ignored;  // a file that cannot be read is not taken for an archive
-    const auto file = openRegularFile(path, &ignored);
+    const auto file = bundle::openRegularFile(path, &ignored);
     return file && file->read(4) == QByteArrayLiteral("PK\x03\x04");
 }
 
 }  // namespace
 
-std::unique_ptr<BundleSource> openBundleSource(const QString& path, QString* error) {
+std::unique_ptr<bundle::BundleSource> openBundleSource(const QString& path, QString* error) {
     const QFileInfo info(path);
-    if (info.isDir() || !info.exists()) return openBundleFolder(path, error);
-    if (const QString kind = irregularFileKind(path); !kind.isEmpty()) {
+    if (info.isDir() || !info.exists()) return bundle::openBundleFolder(path, error);
+    if (const QString kind = bundle::irregularFileKind(path); !kind.isEmpty()) {
         *error = kind + QStringLiteral(", not a bundle folder or .zip archive");
         return nullptr;
     }

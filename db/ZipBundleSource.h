@@ -12,6 +12,6 @@ namespace driftlab::db {
 
 /// A bundle folder or a .zip archive of one; nullptr with `error` set (the
 /// path and why) when `path` is neither.
-std::unique_ptr<BundleSource> openBundleSource(const QString& path, QString* error);
+std::unique_ptr<bundle::BundleSource> openBundleSource(const QString& path, QString* error);
 
 }  // namespace driftlab::db

@@ -2,7 +2,7 @@
 
 #include <QTcpSocket>
 
-namespace driftlab {
+namespace driftlab::devices {
 namespace {
 
 /// A line longer than this is not the protocol (a binary peer, a wrong port).
@@ -55,7 +55,7 @@ bool InterferometerConnection::feedBufferedLines(const ReadingHandler& onReading
                 ++m_readings;
                 onReading(*reading);
             }
-        } catch (const InterferometerLineError& e) {
+        } catch (const interferometer::InterferometerLineError& e) {
             m_error = QString::fromStdString(e.what());
             m_errorLine = e.line();
             return false;
@@ -114,4 +114,4 @@ InterferometerConnection::Status InterferometerConnection::read(int wait_ms,
                     .arg(m_readings));
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::devices

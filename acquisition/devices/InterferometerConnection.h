@@ -14,7 +14,7 @@
 
 class QTcpSocket;
 
-namespace driftlab {
+namespace driftlab::devices {
 
 struct InterferometerStreamOptions {
     QString host = QStringLiteral("127.0.0.1");
@@ -32,7 +32,7 @@ public:
         Ended,   ///< the stream's `end` line arrived
         Failed,  ///< error() says why; the readings before stay delivered
     };
-    using ReadingHandler = std::function<void(const CorrectedReading&)>;
+    using ReadingHandler = std::function<void(const interferometer::CorrectedReading&)>;
 
     explicit InterferometerConnection(InterferometerStreamOptions options);
     ~InterferometerConnection();
@@ -62,11 +62,11 @@ private:
 
     InterferometerStreamOptions m_options;
     std::unique_ptr<QTcpSocket> m_socket;  ///< made in open(), on the reading thread
-    std::optional<InterferometerSession> m_session;
+    std::optional<interferometer::InterferometerSession> m_session;
     QElapsedTimer m_sinceBytes;
     QString m_error, m_correction;
     int m_errorLine = 0;
     int m_readings = 0;
 };
 
-}  // namespace driftlab
+}  // namespace driftlab::devices

@@ -21,7 +21,8 @@ public:
         }
         InterferometerBatch batch;
         const auto status = m_connection.read(
-            InterferometerDevice::kReadSlice_ms, [&batch](const CorrectedReading& reading) {
+            InterferometerDevice::kReadSlice_ms,
+            [&batch](const interferometer::CorrectedReading& reading) {
                 batch.readings.push_back({QDateTime::currentDateTimeUtc(), reading});
             });
         if (status != InterferometerConnection::Status::Open) {

@@ -16,7 +16,7 @@ namespace driftlab::devices {
 
 struct TimedInterferometerReading {
     QDateTime time_utc;  ///< when its line arrived
-    CorrectedReading reading;
+    interferometer::CorrectedReading reading;
 };
 
 /// The readings that arrived during one slice of the stream.

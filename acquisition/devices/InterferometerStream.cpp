@@ -1,10 +1,10 @@
 #include "acquisition/devices/InterferometerStream.h"
 
-namespace driftlab {
+namespace driftlab::devices {
 
 InterferometerStreamResult readInterferometerStream(
     const InterferometerStreamOptions& options,
-    const std::function<void(const CorrectedReading&)>& onReading) {
+    const std::function<void(const interferometer::CorrectedReading&)>& onReading) {
     InterferometerStreamResult result;
     InterferometerConnection connection(options);
     if (!connection.open(&result.error)) return result;
@@ -19,4 +19,4 @@ InterferometerStreamResult readInterferometerStream(
     return result;
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::devices

@@ -9,7 +9,7 @@
 
 #include "acquisition/devices/InterferometerConnection.h"
 
-namespace driftlab {
+namespace driftlab::devices {
 
 struct InterferometerStreamResult {
     int readings = 0;       ///< delivered to the callback, all kept whatever came after
@@ -25,6 +25,6 @@ struct InterferometerStreamResult {
 /// delivered before stay delivered.
 InterferometerStreamResult readInterferometerStream(
     const InterferometerStreamOptions& options,
-    const std::function<void(const CorrectedReading&)>& onReading);
+    const std::function<void(const interferometer::CorrectedReading&)>& onReading);
 
-}  // namespace driftlab
+}  // namespace driftlab::devices

@@ -25,7 +25,7 @@ struct DeviceRigSpec {
     std::optional<modbus::ModbusUrl> controller_url;
     /// The interferometer's line stream (docs/interferometer.md); its readings
     /// are matched to the planned targets (TargetMatcher).
-    std::optional<InterferometerStreamOptions> interferometer;
+    std::optional<devices::InterferometerStreamOptions> interferometer;
     /// How far a reading's position may be from a planned target, mm.
     double target_tolerance_mm = 0.05;
     double poll_interval_s = 1.0;

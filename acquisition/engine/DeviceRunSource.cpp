@@ -107,7 +107,7 @@ QString DeviceRunSource::failure() const {
     return {};
 }
 
-void DeviceRunSource::startInterferometer(const InterferometerStreamOptions& options,
+void DeviceRunSource::startInterferometer(const devices::InterferometerStreamOptions& options,
                                           const devices::DeviceWorkerOptions& worker) {
     m_interferometerSource =
         QStringLiteral("interferometer %1:%2").arg(options.host).arg(options.port);

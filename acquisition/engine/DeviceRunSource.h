@@ -39,7 +39,7 @@ private:
     /// As watch(), and the device must give a reading within the connect timeout.
     template <typename Device>
     void watchFirstReading(Device* device, const QString& source);
-    void startInterferometer(const InterferometerStreamOptions& options,
+    void startInterferometer(const devices::InterferometerStreamOptions& options,
                              const devices::DeviceWorkerOptions& worker);
     /// Matches a reading to its planned measurement; logs the correction applied.
     void takeReading(const devices::TimedInterferometerReading& r);

@@ -110,15 +110,15 @@ std::unique_ptr<TestRig> makeDeviceRig(const RigOptions& options, RigError* erro
 
 }  // namespace
 
-std::optional<InterferometerStreamOptions> parseInterferometerUrl(const QString& text,
-                                                                  QString* error) {
+std::optional<devices::InterferometerStreamOptions> parseInterferometerUrl(const QString& text,
+                                                                           QString* error) {
     const QUrl url(text, QUrl::StrictMode);
     if (!url.isValid() || url.scheme() != QLatin1String("tcp") || url.host().isEmpty() ||
         url.port() <= 0 || (!url.path().isEmpty() && url.path() != QLatin1String("/"))) {
         if (error) *error = QStringLiteral("'%1' is not tcp://HOST:PORT").arg(text);
         return std::nullopt;
     }
-    InterferometerStreamOptions options;
+    devices::InterferometerStreamOptions options;
     options.host = url.host();
     options.port = quint16(url.port());
     return options;

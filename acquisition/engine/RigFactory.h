@@ -42,7 +42,7 @@ std::unique_ptr<TestRig> makeRig(const RigOptions& options, const procedures::Pr
                                  RigError* error);
 
 /// tcp://HOST:PORT of an interferometer's line stream; nullopt with `error`.
-std::optional<InterferometerStreamOptions> parseInterferometerUrl(const QString& text,
-                                                                  QString* error);
+std::optional<devices::InterferometerStreamOptions> parseInterferometerUrl(const QString& text,
+                                                                           QString* error);
 
 }  // namespace driftlab::engine

@@ -20,28 +20,28 @@ void ColumnRange::merge(const ColumnRange& other) {
 }
 
 LiveChunk::LiveChunk(std::int64_t first_row, int columns)
-    : firstRow_(first_row),
-      columns_(columns),
-      time_s_(new double[kCapacityRows]),
-      values_(new double[std::size_t(kCapacityRows) * columns]),
-      ranges_(columns) {}
+    : m_firstRow(first_row),
+      m_columns(columns),
+      m_time_s(new double[kCapacityRows]),
+      m_values(new double[std::size_t(kCapacityRows) * columns]),
+      m_ranges(columns) {}
 
 bool LiveChunk::appendRow(double time_s, const double* values) {
-    // Only the writer changes rows_, so a relaxed load sees its own last store.
-    const int i = rows_.load(std::memory_order_relaxed);
-    time_s_[i] = time_s;
-    std::copy(values, values + columns_, values_.get() + std::size_t(i) * columns_);
-    rows_.store(i + 1, std::memory_order_release);
+    // Only the writer changes m_rows, so a relaxed load sees its own last store.
+    const int i = m_rows.load(std::memory_order_relaxed);
+    m_time_s[i] = time_s;
+    std::copy(values, values + m_columns, m_values.get() + std::size_t(i) * m_columns);
+    m_rows.store(i + 1, std::memory_order_release);
     return i + 1 == kCapacityRows;
 }
 
 void LiveChunk::seal() {
-    for (int c = 0; c < columns_; ++c) {
+    for (int c = 0; c < m_columns; ++c) {
         ColumnRange r;
         for (int i = 0; i < kCapacityRows; ++i) r.add(value(i, c));
-        ranges_[c] = r;
+        m_ranges[c] = r;
     }
-    sealed_.store(true, std::memory_order_release);
+    m_sealed.store(true, std::memory_order_release);
 }
 
 }  // namespace driftlab::live

@@ -34,18 +34,18 @@ public:
     LiveChunk& operator=(const LiveChunk&) = delete;
 
     /// The buffer-wide index of this chunk's first row.
-    std::int64_t firstRow() const { return firstRow_; }
-    int columns() const { return columns_; }
+    std::int64_t firstRow() const { return m_firstRow; }
+    int columns() const { return m_columns; }
     /// Rows complete and readable now; rows below it never change again.
-    int publishedRows() const { return rows_.load(std::memory_order_acquire); }
+    int publishedRows() const { return m_rows.load(std::memory_order_acquire); }
     /// Full, with its column ranges computed (acquire: ranges are readable after).
-    bool sealed() const { return sealed_.load(std::memory_order_acquire); }
+    bool sealed() const { return m_sealed.load(std::memory_order_acquire); }
 
     /// Row `i` < publishedRows().
-    double time_s(int i) const { return time_s_[i]; }
-    double value(int i, int column) const { return values_[std::size_t(i) * columns_ + column]; }
+    double time_s(int i) const { return m_time_s[i]; }
+    double value(int i, int column) const { return m_values[std::size_t(i) * m_columns + column]; }
     /// Only when sealed(): the column over all kCapacityRows rows.
-    const ColumnRange& range(int column) const { return ranges_[column]; }
+    const ColumnRange& range(int column) const { return m_ranges[column]; }
 
 private:
     friend class LiveSampleBuffer;
@@ -55,13 +55,13 @@ private:
     /// Writer only, once full: computes the ranges, then marks sealed (release).
     void seal();
 
-    const std::int64_t firstRow_;
-    const int columns_;
-    std::unique_ptr<double[]> time_s_;
-    std::unique_ptr<double[]> values_;
-    std::vector<ColumnRange> ranges_;
-    std::atomic<int> rows_{0};
-    std::atomic<bool> sealed_{false};
+    const std::int64_t m_firstRow;
+    const int m_columns;
+    std::unique_ptr<double[]> m_time_s;
+    std::unique_ptr<double[]> m_values;
+    std::vector<ColumnRange> m_ranges;
+    std::atomic<int> m_rows{0};
+    std::atomic<bool> m_sealed{false};
 };
 
 }  // namespace driftlab::live

@@ -28,13 +28,13 @@ public:
     /// Refuses an offset beyond int32 nm (±2.1 m) before writing.
     bool publish(double offset_um, bool enable, QString* error);
 
-    std::uint16_t sequence() const { return sequence_; }
-    const modbus::ModbusUrl& url() const { return link_.url(); }
+    std::uint16_t sequence() const { return m_sequence; }
+    const modbus::ModbusUrl& url() const { return m_link.url(); }
 
 private:
-    modbus::ModbusLink link_;
-    int staleAfter_s_;
-    std::uint16_t sequence_ = 0;
+    modbus::ModbusLink m_link;
+    int m_staleAfter_s;
+    std::uint16_t m_sequence = 0;
 };
 
 }  // namespace driftlab::live

@@ -10,8 +10,8 @@ namespace driftlab::live {
 
 std::pair<const LiveChunk*, int> LiveRows::locate(std::int64_t row) const {
     // Chunks are contiguous and all kCapacityRows long.
-    const std::int64_t offset = row - chunks_.front()->firstRow();
-    const LiveChunk* chunk = chunks_[std::size_t(offset / LiveChunk::kCapacityRows)].get();
+    const std::int64_t offset = row - m_chunks.front()->firstRow();
+    const LiveChunk* chunk = m_chunks[std::size_t(offset / LiveChunk::kCapacityRows)].get();
     return {chunk, int(offset % LiveChunk::kCapacityRows)};
 }
 

@@ -15,11 +15,11 @@ namespace driftlab::live {
 
 class LiveRows {
 public:
-    std::int64_t beginRow() const { return begin_; }
-    std::int64_t endRow() const { return end_; }
-    std::int64_t size() const { return end_ - begin_; }
-    bool empty() const { return end_ == begin_; }
-    int columns() const { return columns_; }
+    std::int64_t beginRow() const { return m_begin; }
+    std::int64_t endRow() const { return m_end; }
+    std::int64_t size() const { return m_end - m_begin; }
+    bool empty() const { return m_end == m_begin; }
+    int columns() const { return m_columns; }
 
     /// beginRow() ≤ row < endRow().
     double time_s(std::int64_t row) const;
@@ -27,16 +27,16 @@ public:
 
     /// The chunks holding [beginRow, endRow), oldest first (the first and last
     /// may hold rows outside it).
-    const std::vector<std::shared_ptr<const LiveChunk>>& chunks() const { return chunks_; }
+    const std::vector<std::shared_ptr<const LiveChunk>>& chunks() const { return m_chunks; }
 
 private:
     friend class LiveSampleBuffer;
     std::pair<const LiveChunk*, int> locate(std::int64_t row) const;
 
-    std::vector<std::shared_ptr<const LiveChunk>> chunks_;
-    std::int64_t begin_ = 0;
-    std::int64_t end_ = 0;
-    int columns_ = 0;
+    std::vector<std::shared_ptr<const LiveChunk>> m_chunks;
+    std::int64_t m_begin = 0;
+    std::int64_t m_end = 0;
+    int m_columns = 0;
 };
 
 /// One bucket of a plot summary: the column's present values with from_s ≤ t < to_s

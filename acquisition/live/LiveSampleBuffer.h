@@ -37,10 +37,10 @@ public:
     bool append(double time_s, std::span<const double> values, QString* error);
 
     // --- readers (any thread, any number) ---
-    const QStringList& columns() const { return columns_; }
-    int columnIndex(const QString& name) const { return int(columns_.indexOf(name)); }
+    const QStringList& columns() const { return m_columns; }
+    int columnIndex(const QString& name) const { return int(m_columns.indexOf(name)); }
     /// Rows appended and published so far (acquire).
-    std::int64_t rowCount() const { return rowCount_.load(std::memory_order_acquire); }
+    std::int64_t rowCount() const { return m_rowCount.load(std::memory_order_acquire); }
     /// The first row still held (0 unless keep_chunks dropped older chunks).
     std::int64_t firstHeldRow() const;
 
@@ -60,18 +60,18 @@ public:
     std::int64_t waitForRows(std::int64_t row_count, std::chrono::microseconds timeout) const;
 
 private:
-    const QStringList columns_;
-    const int keepChunks_;
+    const QStringList m_columns;
+    const int m_keepChunks;
 
     // Writer-owned: the chunk being filled, the time of the last row.
-    std::shared_ptr<LiveChunk> open_;
-    double lastTime_s_ = 0;
+    std::shared_ptr<LiveChunk> m_open;
+    double m_lastTime_s = 0;
 
-    mutable std::mutex chunksMutex_;
-    std::vector<std::shared_ptr<const LiveChunk>> chunks_;  // guarded by chunksMutex_
+    mutable std::mutex m_chunksMutex;
+    std::vector<std::shared_ptr<const LiveChunk>> m_chunks;  // guarded by m_chunksMutex
 
-    std::atomic<std::int64_t> rowCount_{0};
-    RowsArrivedSignal rowsArrived_;
+    std::atomic<std::int64_t> m_rowCount{0};
+    RowsArrivedSignal m_rowsArrived;
 };
 
 }  // namespace driftlab::live

@@ -20,7 +20,7 @@ public:
     using Deadline = std::chrono::steady_clock::time_point;
 
     /// The word a sleeper compares against: read it before checking for rows.
-    std::uint32_t word() const { return word_.load(std::memory_order_acquire); }
+    std::uint32_t word() const { return m_word.load(std::memory_order_acquire); }
     /// Writer: after publishing a row. Never blocks.
     void publish();
     /// Reader: sleeps while word() == seen, until publish() or the deadline
@@ -28,11 +28,11 @@ public:
     void sleep(std::uint32_t seen, Deadline deadline) const;
 
 private:
-    std::atomic<std::uint32_t> word_{0};
-    mutable std::atomic<int> sleepers_{0};
+    std::atomic<std::uint32_t> m_word{0};
+    mutable std::atomic<int> m_sleepers{0};
 #ifndef __linux__
-    mutable std::mutex mutex_;
-    mutable std::condition_variable cv_;
+    mutable std::mutex m_mutex;
+    mutable std::condition_variable m_cv;
 #endif
 };
 

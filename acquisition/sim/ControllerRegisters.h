@@ -10,7 +10,7 @@
 #include "acquisition/devices/AxisStateRegisters.h"
 #include "acquisition/push/CompensationRegisterMap.h"
 
-namespace driftlab::push {
+namespace driftlab::sim {
 
 /// Faults the simulated controller injects, each once unless said otherwise.
 struct ControllerFaults {
@@ -56,26 +56,26 @@ public:
     void setFaults(ControllerFaults faults);
     int writeRequests() const { return m_writes; }
     int applied() const { return m_applied; }
-    TableImage active() const;
+    push::TableImage active() const;
 
 private:
     void commit();
     void abort();
     void rollBack();
     void apply();
-    TableImage image(int headerAddress, int dataAddress) const;
-    void store(const TableImage& image, int headerAddress, int dataAddress);
-    void setStatus(CommitStatus status, std::uint16_t version);
+    push::TableImage image(int headerAddress, int dataAddress) const;
+    void store(const push::TableImage& image, int headerAddress, int dataAddress);
+    void setStatus(push::CommitStatus status, std::uint16_t version);
 
     std::uint16_t* m_regs;
     int m_capacity;
     ControllerFaults m_faults;
     bool m_pending = false;
-    TableImage m_previous;  ///< what a rollback restores (version 0: no table)
+    push::TableImage m_previous;  ///< what a rollback restores (version 0: no table)
     int m_writes = 0;
     int m_dropAt = -1;  ///< the write request number the drop fault closes on
     int m_polls = 0;
     int m_applied = 0;
 };
 
-}  // namespace driftlab::push
+}  // namespace driftlab::sim

@@ -12,7 +12,10 @@
 
 #include "acquisition/modbus/ModbusUrl.h"
 
-namespace driftlab::push {
+namespace driftlab::sim {
+
+// The register map this simulated controller serves is the push's own.
+using namespace push;
 namespace {
 
 constexpr int kPollIntervalMs = 20;
@@ -45,9 +48,10 @@ QString SimulatedController::url() const {
 }
 
 bool SimulatedController::start(QString* error) {
-    if (m_options.capacity < 2 || m_options.capacity > kMaxCapacity) {
-        *error =
-            QStringLiteral("capacity %1 is not 2 to %2").arg(m_options.capacity).arg(kMaxCapacity);
+    if (m_options.capacity < 2 || m_options.capacity > push::kMaxCapacity) {
+        *error = QStringLiteral("capacity %1 is not 2 to %2")
+                     .arg(m_options.capacity)
+                     .arg(push::kMaxCapacity);
         return false;
     }
     if (const auto why = unusableListenHost(m_options.host)) {
@@ -177,9 +181,9 @@ void SimulatedController::setFaults(const ControllerFaults& faults) {
     if (m_registers) m_registers->setFaults(faults);
 }
 
-TableImage SimulatedController::activeTable() const {
+push::TableImage SimulatedController::activeTable() const {
     std::lock_guard lock(m_mutex);
-    return m_registers ? m_registers->active() : TableImage{};
+    return m_registers ? m_registers->active() : push::TableImage{};
 }
 
 int SimulatedController::writeRequests() const {
@@ -199,4 +203,4 @@ std::uint16_t SimulatedController::registerValue(int address) const {
                : 0;
 }
 
-}  // namespace driftlab::push
+}  // namespace driftlab::sim

@@ -18,12 +18,12 @@
 struct _modbus;
 struct _modbus_mapping_t;
 
-namespace driftlab::push {
+namespace driftlab::sim {
 
 struct SimulatedControllerOptions {
     QString host = QStringLiteral("127.0.0.1");  ///< an IPv4 or IPv6 address, or a host name
     int port = 0;  ///< 0: a free port chosen by the system (see port())
-    int capacity = kMaxCapacity;
+    int capacity = push::kMaxCapacity;
     MachineState state = MachineState::Idle;
     devices::AxisState axis;  ///< served until setAxisState()
     ControllerFaults faults;
@@ -58,7 +58,7 @@ public:
     void setAxisState(const devices::AxisState& state);
     /// Replaces the injected faults (a drop counts from now).
     void setFaults(const ControllerFaults& faults);
-    TableImage activeTable() const;
+    push::TableImage activeTable() const;
     /// Write requests received (also the one a drop fault closed on).
     int writeRequests() const;
     /// Tables applied so far.
@@ -81,4 +81,4 @@ private:
     int m_port = 0;
 };
 
-}  // namespace driftlab::push
+}  // namespace driftlab::sim

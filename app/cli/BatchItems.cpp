@@ -19,7 +19,7 @@ const QStringList kAnalyses{kAnalysisInfo, kAnalysisIso230_2, kAnalysisFit, kAna
 bool isBundleFolder(const QFileInfo& info) {
     const QDir folder(info.filePath());
     return info.isDir() && (QFileInfo::exists(folder.filePath(QStringLiteral("campaign.json"))) ||
-                            folder.exists(kExportLockFile));
+                            folder.exists(bundle::kExportLockFile));
 }
 
 bool isZip(const QFileInfo& info) {

@@ -87,9 +87,9 @@ int exportCommand(const QStringList& args) {
     parseArguments(parser, args, QList<QCommandLineOption>(required) << force,
                    {{}, {}, {}, required});
     const Campaign campaign = loadCampaignSource(parser);
-    if (auto error =
-            writeBundle(campaign, parser.value(out),
-                        parser.isSet(force) ? ExistingBundle::Replace : ExistingBundle::Refuse))
+    if (auto error = bundle::writeBundle(
+            campaign, parser.value(out),
+            parser.isSet(force) ? bundle::ExistingBundle::Replace : bundle::ExistingBundle::Refuse))
         throw CliError(error->toString());
     if (parser.isSet(QStringLiteral("json")))
         printJson(

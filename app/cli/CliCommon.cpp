@@ -155,7 +155,7 @@ std::optional<qint64> storeFitIfFromDatabase(const QCommandLineParser& parser,
     return id;
 }
 
-std::unique_ptr<BundleSource> openBundleOrFail(const QString& path) {
+std::unique_ptr<bundle::BundleSource> openBundleOrFail(const QString& path) {
     QString error;
     auto source = db::openBundleSource(path, &error);
     if (!source) throw CliError(path + QStringLiteral(": ") + error);
@@ -170,13 +170,13 @@ void printWarnings(const QStringList& warnings) {
 
 Campaign readBundleOrFail(const QString& path) {
     const auto source = openBundleOrFail(path);
-    BundleReadOptions options;
+    bundle::BundleReadOptions options;
     options.progress = [](double f) { return printProgress(QStringLiteral("reading bundle"), f); };
-    BundleReadResult result = readBundle(*source, options);
+    bundle::BundleReadResult result = bundle::readBundle(*source, options);
     printWarnings(result.warnings);
     if (!result.ok()) {
         // Name the file by its full path so the user can open it at that line.
-        BundleError e = *result.error;
+        bundle::BundleError e = *result.error;
         e.file = source->displayPath(e.file);
         throw CliError(e.toString());
     }

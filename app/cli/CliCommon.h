@@ -59,7 +59,7 @@ std::optional<qint64> storeFitIfFromDatabase(const QCommandLineParser& parser,
 const Run& choosePositioningRun(const Campaign& campaign, const QString& wanted);
 
 /// A bundle folder or .zip archive; throws CliError naming the path and why.
-std::unique_ptr<BundleSource> openBundleOrFail(const QString& path);
+std::unique_ptr<bundle::BundleSource> openBundleOrFail(const QString& path);
 /// Reads and validates a bundle (folder or .zip); throws CliError with file:line:column: why.
 Campaign readBundleOrFail(const QString& path);
 /// "warning: ..." lines on stderr.

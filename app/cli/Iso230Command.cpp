@@ -22,7 +22,7 @@ std::vector<iso::Reading> readCsv(const QString& path) {
         throw CliError(QStringLiteral("%1: cannot open: %2").arg(path, file->errorString()));
     std::vector<iso::Reading> readings;
     try {
-        CsvTable table(std::move(file), path);
+        bundle::CsvTable table(std::move(file), path);
         const int target = table.requireColumn(QStringLiteral("target_mm"));
         const int direction = table.requireColumn(QStringLiteral("direction"));
         const int cycle = table.requireColumn(QStringLiteral("cycle"));
@@ -43,7 +43,7 @@ std::vector<iso::Reading> readCsv(const QString& path) {
         }
         if (readings.empty())
             throw CliError(path + QStringLiteral(": no readings after the header"));
-    } catch (const BundleException& e) {
+    } catch (const bundle::BundleException& e) {
         throw CliError(e.error.toString());
     }
     return readings;

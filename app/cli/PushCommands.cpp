@@ -25,7 +25,7 @@ MachineState machineState(const QString& name) {
 }
 
 /// --fault F: drop-after-writes=N, refuse-commit, corrupt-after-apply, idle-after-polls=N.
-void addFault(push::ControllerFaults& faults, const QString& fault) {
+void addFault(sim::ControllerFaults& faults, const QString& fault) {
     const QString name = fault.section(QLatin1Char('='), 0, 0);
     bool ok = true;
     const int n =
@@ -89,9 +89,9 @@ int controllerSimCommand(const QStringList& args) {
                        "torque N·m (default 0,0,0)."),
         QStringLiteral("P,F,T"), QStringLiteral("0,0,0")};
     parseArguments(parser, args, {host, port, capacity, state, fault, axis});
-    push::SimulatedControllerOptions options;
+    sim::SimulatedControllerOptions options;
     options.host = parser.value(host);
-    if (const auto why = push::unusableListenHost(options.host))
+    if (const auto why = sim::unusableListenHost(options.host))
         throw CliError(QStringLiteral("--host: ") + *why, 2);
     bool ok = false;
     options.port = parser.value(port).toInt(&ok);
@@ -110,7 +110,7 @@ int controllerSimCommand(const QStringList& args) {
     sigaddset(&stopSignals, SIGINT);
     sigaddset(&stopSignals, SIGTERM);
     pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
-    push::SimulatedController controller(options);
+    sim::SimulatedController controller(options);
     QString error;
     if (!controller.start(&error)) throw CliError(error);
     if (parser.isSet(QStringLiteral("json")))

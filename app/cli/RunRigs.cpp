@@ -88,8 +88,8 @@ std::unique_ptr<engine::TestRig> makeRig(const QCommandLineParser& parser, const
             throw CliError(
                 QStringLiteral("--machine: %1: %2").arg(file.fileName(), file.errorString()), 2);
         try {
-            options.machine = campaignFromJson(file.readAll(), file.fileName());
-        } catch (const BundleError& e) {
+            options.machine = bundle::campaignFromJson(file.readAll(), file.fileName());
+        } catch (const bundle::BundleError& e) {
             throw CliError(QStringLiteral("--machine: %1").arg(e.toString()), 2);
         }
     }

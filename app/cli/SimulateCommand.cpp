@@ -108,7 +108,7 @@ int simulateCommand(const QStringList& args) {
         throw CliError(QString::fromStdString(e.what()));
     }
     const QString dir = parser.value(out);
-    if (auto error = writeBundle(campaign, dir, ExistingBundle::Replace))
+    if (auto error = bundle::writeBundle(campaign, dir, bundle::ExistingBundle::Replace))
         throw CliError(error->toString());
 
     QJsonArray writtenPlots;

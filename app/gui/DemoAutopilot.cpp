@@ -6,13 +6,13 @@
 #include <QTabWidget>
 #include <QTimer>
 
-#include "ui/app/BackgroundJob.h"
-#include "ui/app/MainWindow.h"
-#include "ui/app/RunController.h"
-#include "ui/app/Session.h"
 #include "ui/pages/DiagnosisPage.h"
 #include "ui/pages/ModelsPage.h"
 #include "ui/pages/RunPage.h"
+#include "ui/shell/BackgroundJob.h"
+#include "ui/shell/MainWindow.h"
+#include "ui/shell/RunController.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/FitSetupPanel.h"
 
 namespace driftlab::gui {

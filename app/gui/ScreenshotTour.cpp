@@ -5,8 +5,8 @@
 #include <QTabWidget>
 #include <QTimer>
 
-#include "ui/app/MainWindow.h"
 #include "ui/pages/ModelsPage.h"
+#include "ui/shell/MainWindow.h"
 
 namespace driftlab::gui {
 namespace {

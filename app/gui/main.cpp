@@ -16,7 +16,7 @@
 
 #include "app/gui/DemoAutopilot.h"
 #include "app/gui/ScreenshotTour.h"
-#include "ui/app/MainWindow.h"
+#include "ui/shell/MainWindow.h"
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);

@@ -7,18 +7,18 @@
 #include "core/bundle/BundleWriter.h"
 #include "db/CampaignImport.h"
 #include "db/CampaignStore.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
 
 using namespace driftlab;
 
 static void BM_ImportMillionSampleBundle(benchmark::State& state) {
     QTemporaryDir dir;
     const QString bundle = dir.filePath(QStringLiteral("bundle"));
-    writeBundle(test::generatedCampaign(125'000), bundle);  // 8 columns -> 1e6 samples
+    bundle::writeBundle(test::generatedCampaign(125'000), bundle);  // 8 columns -> 1e6 samples
     int round = 0;
     for (auto _ : state) {
         QString error;
-        const auto source = openBundleFolder(bundle, &error);
+        const auto source = bundle::openBundleFolder(bundle, &error);
         const db::BundleCheck checked = db::checkBundle(*source);
         auto store =
             db::CampaignStore::open(dir.filePath(QStringLiteral("lab%1.sqlite").arg(round++)),
@@ -34,8 +34,8 @@ BENCHMARK(BM_ImportMillionSampleBundle)->Unit(benchmark::kMillisecond)->UseRealT
 
 static void BM_ReadMillionSampleBundle(benchmark::State& state) {
     QTemporaryDir dir;
-    writeBundle(test::generatedCampaign(125'000), dir.path());
-    for (auto _ : state) benchmark::DoNotOptimize(readBundle(dir.path()));
+    bundle::writeBundle(test::generatedCampaign(125'000), dir.path());
+    for (auto _ : state) benchmark::DoNotOptimize(bundle::readBundle(dir.path()));
     state.counters["samples_per_s"] =
         benchmark::Counter(1e6 * double(state.iterations()), benchmark::Counter::kIsRate);
 }

@@ -12,7 +12,7 @@
 using namespace driftlab;
 
 static void BM_Push256PointTable(benchmark::State& state) {
-    push::SimulatedController controller;
+    sim::SimulatedController controller;
     QString error;
     if (!controller.start(&error)) {
         state.SkipWithError(qPrintable(error));

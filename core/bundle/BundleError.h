@@ -5,7 +5,7 @@
 #include <QString>
 #include <stdexcept>
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 struct BundleError {
     QString file;
@@ -28,4 +28,4 @@ struct BundleException : std::runtime_error {
     BundleError error;
 };
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -15,14 +15,14 @@
 #include "core/bundle/CsvTable.h"
 #include "core/domain/Units.h"
 
-namespace driftlab::bundle_files {
+namespace driftlab::bundle::files {
 inline const QString kCampaign = QStringLiteral("campaign.json");
 inline const QString kSamples = QStringLiteral("samples.csv");
 inline const QString kMotion = QStringLiteral("motion.csv");
 inline const QString kPositioning = QStringLiteral("positioning.csv");
-}  // namespace driftlab::bundle_files
+}  // namespace driftlab::bundle::files
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 /// Where a run's last record in motion.csv or positioning.csv stands (times
 /// increase within a run, so it holds the run's latest time): that time is
@@ -78,4 +78,4 @@ private:
     double m_positionMax_mm = std::numeric_limits<double>::infinity();
 };
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

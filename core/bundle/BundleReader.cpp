@@ -15,9 +15,9 @@
 #include "core/bundle/ValueLimits.h"
 #include "core/domain/MessageText.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 
-using namespace bundle_files;
+using namespace files;
 
 Campaign BundleParser::parse() {
     // An export's staging folder may already hold some files in their final
@@ -349,4 +349,4 @@ BundleReadResult readBundle(const QString& directory, const BundleReadOptions& o
     return readBundle(*source, options);
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

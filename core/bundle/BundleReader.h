@@ -12,7 +12,7 @@
 #include "core/bundle/BundleSource.h"
 #include "core/domain/Campaign.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 /// Receives samples.csv row by row instead of the campaign keeping them, so an
 /// import streams into the store and memory does not grow with the file.
@@ -47,4 +47,4 @@ BundleReadResult readBundle(const BundleSource& source, const BundleReadOptions&
 /// The same for a bundle folder.
 BundleReadResult readBundle(const QString& directory, const BundleReadOptions& options = {});
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -6,7 +6,7 @@
 
 #include "core/bundle/RegularFile.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 namespace {
 
 class FolderBundleSource : public BundleSource {
@@ -57,4 +57,4 @@ QByteArray bundleContentSha256(const BundleSource& source, QString* error) {
     return hash.result().toHex();
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -7,7 +7,7 @@
 #include <QString>
 #include <memory>
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 class BundleSource {
 public:
@@ -29,4 +29,4 @@ std::unique_ptr<BundleSource> openBundleFolder(const QString& path, QString* err
 /// with `error` set when a file cannot be read.
 QByteArray bundleContentSha256(const BundleSource& source, QString* error);
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -11,7 +11,7 @@
 
 #include "core/bundle/CampaignJson.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 namespace {
 
 const QStringList kBundleFiles{QStringLiteral("campaign.json"), QStringLiteral("samples.csv"),
@@ -188,4 +188,4 @@ std::optional<BundleError> writeBundle(const Campaign& campaign, const QString& 
     return std::nullopt;
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -7,7 +7,7 @@
 #include "core/bundle/BundleError.h"
 #include "core/domain/Campaign.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 /// The lock file an export holds in its staging folder (`DIR.partial-XXXXXX`,
 /// beside the target) while it writes: the reader refuses a folder holding it,
@@ -30,4 +30,4 @@ enum class ExistingBundle {
 std::optional<BundleError> writeBundle(const Campaign& campaign, const QString& directory,
                                        ExistingBundle existing = ExistingBundle::Refuse);
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

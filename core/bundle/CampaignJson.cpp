@@ -10,7 +10,7 @@
 #include "core/bundle/BundleError.h"
 #include "core/domain/MessageText.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 namespace {
 
 /// What the format does when one of its keys is absent.
@@ -521,4 +521,4 @@ QJsonObject campaignToJson(const Campaign& c) {
     return o;
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -7,7 +7,7 @@
 
 #include "core/domain/Campaign.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 /// Parses campaign.json; throws BundleException naming the key path on bad input.
 /// Runs are created without data. Keys the format does not know are kept in
@@ -20,4 +20,4 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName,
 /// The campaign.json object of a campaign (its runs without data).
 QJsonObject campaignToJson(const Campaign& campaign);
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -2,7 +2,7 @@
 
 #include "core/bundle/ValueLimits.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 namespace {
 
 struct StemAndUnit {
@@ -59,4 +59,4 @@ std::optional<QString> otherUnitOf(const QString& header, const QString& name) {
     return have.unit;
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

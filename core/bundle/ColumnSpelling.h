@@ -9,7 +9,7 @@
 #include <QString>
 #include <optional>
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 /// Whether `header` names the column `name` (a format column: a stem and,
 /// after its first '_', a unit).
@@ -20,4 +20,4 @@ bool spellsColumn(const QString& header, const QString& name);
 /// ("ms"; empty for none).
 std::optional<QString> otherUnitOf(const QString& header, const QString& name);
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

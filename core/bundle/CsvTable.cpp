@@ -14,7 +14,7 @@
 #include <limits>
 #include <utility>
 
-namespace driftlab {
+namespace driftlab::bundle {
 namespace {
 
 constexpr qint64 kChunkBytes = 1 << 20;
@@ -349,4 +349,4 @@ void CsvTable::fail(int column, const QString& message) const {
     throw BundleException({m_fileName, m_recordLine, column + 1, message});
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -20,7 +20,7 @@
 class QIODevice;
 struct csv_parser;
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 class CsvTable {
 public:
@@ -118,4 +118,4 @@ private:
     std::vector<QString> m_header;
 };
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -5,7 +5,7 @@
 #include <unistd.h>
 #include <cerrno>
 
-namespace driftlab {
+namespace driftlab::bundle {
 namespace {
 
 QString kindOf(mode_t mode) {
@@ -55,4 +55,4 @@ std::unique_ptr<QFile> openRegularFile(const QString& path, QString* error) {
     return file;
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -8,7 +8,7 @@
 #include <QString>
 #include <memory>
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 /// What `path` is when it exists but is not a regular file ("a FIFO (named
 /// pipe)", "a folder", "a character device", ...); empty for a regular file or
@@ -21,4 +21,4 @@ QString irregularFileKind(const QString& path);
 /// (named pipe), not a regular file".
 std::unique_ptr<QFile> openRegularFile(const QString& path, QString* error);
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -9,7 +9,7 @@
 #include "core/bundle/ValueLimits.h"
 #include "core/domain/MessageText.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 namespace {
 
 /// Whether a moving run's readings, on the run's clock, have no cycle 0 and
@@ -26,7 +26,7 @@ bool firstPassIsCycleOneAtTheStart(const Run& run) {
 
 }  // namespace
 
-using namespace bundle_files;
+using namespace files;
 
 /// The columns of a file of fixed format (motion.csv, positioning.csv), each
 /// required. A further column (an interferometer package's air and material
@@ -179,4 +179,4 @@ void BundleParser::countCyclesFromZero() {
                     .arg(kPositioning, quotedList(runs));
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -6,7 +6,7 @@
 #include "core/bundle/ValueLimits.h"
 #include "core/domain/MessageText.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 void mergeInto(HeldRow& held, const std::vector<double>& row, const CsvTable& csv,
                const std::vector<int>& columns, const QString& run) {
@@ -64,4 +64,4 @@ void moveOntoRunClock(Run& run, double offset_s) {
     for (PositioningMeasurement& p : run.positioning) p.time_s = onRunClock(p.time_s, offset_s);
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

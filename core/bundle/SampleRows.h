@@ -17,7 +17,7 @@
 #include "core/domain/Channel.h"
 #include "core/domain/Run.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 /// A run's latest row of samples.csv, not yet stored.
 struct HeldRow {
@@ -73,4 +73,4 @@ double onRunClock(double time_s, double offset_s);
 /// moved as they are read).
 void moveOntoRunClock(Run& run, double offset_s);
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -6,7 +6,7 @@
 
 #include "core/domain/MessageText.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 namespace {
 
 constexpr double kMinTemperatureC = -60.0;
@@ -123,4 +123,4 @@ std::optional<HeaderWithUnit> splitHeaderUnit(const QString& header) {
     return HeaderWithUnit{m.captured(1), m.hasCaptured(2) ? m.captured(2) : m.captured(3)};
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

@@ -8,7 +8,7 @@
 
 #include "core/domain/Channel.h"
 
-namespace driftlab {
+namespace driftlab::bundle {
 
 /// Why `value` cannot be a reading of `quantity` in DriftLab's units, or nothing.
 /// Temperatures must lie in −60…300 °C, and a reading above 200 °C is taken
@@ -44,4 +44,4 @@ struct HeaderWithUnit {
 /// The id and the unit of such a header, or nothing when it names none.
 std::optional<HeaderWithUnit> splitHeaderUnit(const QString& header);
 
-}  // namespace driftlab
+}  // namespace driftlab::bundle

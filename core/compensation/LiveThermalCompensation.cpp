@@ -49,42 +49,42 @@ bool LiveSettings::isValid(QString* why) const {
 
 LiveThermalCompensation::LiveThermalCompensation(const physics::ScrewThermalParameters& parameters,
                                                  double initial_C, LiveSettings settings)
-    : model_(parameters, initial_C), settings_(std::move(settings)) {
+    : m_model(parameters, initial_C), m_settings(std::move(settings)) {
     QString why;
-    if (!settings_.isValid(&why)) throw std::invalid_argument(why.toStdString());
-    positions_mm_ = settings_.table_positions_mm;
-    positions_mm_.push_back(settings_.offset_position_mm);
-    applied_.table_correction_um.assign(settings_.table_positions_mm.size(), 0.0);
-    nextDue_s_ = settings_.update_interval_s;
+    if (!m_settings.isValid(&why)) throw std::invalid_argument(why.toStdString());
+    m_positions_mm = m_settings.table_positions_mm;
+    m_positions_mm.push_back(m_settings.offset_position_mm);
+    m_applied.table_correction_um.assign(m_settings.table_positions_mm.size(), 0.0);
+    m_nextDue_s = m_settings.update_interval_s;
 }
 
 double LiveThermalCompensation::targetOffsetUm() const {
-    return -model_.thermalError_um(std::vector<double>{settings_.offset_position_mm}).front();
+    return -m_model.thermalError_um(std::vector<double>{m_settings.offset_position_mm}).front();
 }
 
 std::optional<LiveUpdate> LiveThermalCompensation::step(const physics::StepConditions& conditions,
                                                         MachineState state) {
-    model_.step(conditions);
-    const double now_s = model_.time_s();
+    m_model.step(conditions);
+    const double now_s = m_model.time_s();
     // Small tolerance: steps that land on the interval by float sums count as on it.
-    if (!pendingSince_s_ && now_s >= nextDue_s_ - 1e-9) pendingSince_s_ = nextDue_s_;
-    if (!pendingSince_s_ || !isSafeToCompensate(state)) return std::nullopt;
-    applied_ = makeUpdate(*pendingSince_s_);
-    pendingSince_s_.reset();
+    if (!m_pendingSince_s && now_s >= m_nextDue_s - 1e-9) m_pendingSince_s = m_nextDue_s;
+    if (!m_pendingSince_s || !isSafeToCompensate(state)) return std::nullopt;
+    m_applied = makeUpdate(*m_pendingSince_s);
+    m_pendingSince_s.reset();
     // The schedule stays on whole intervals; the ones that passed during a
     // wait for a safe state are covered by this update, not replayed.
-    while (nextDue_s_ <= now_s + 1e-9) nextDue_s_ += settings_.update_interval_s;
-    return applied_;
+    while (m_nextDue_s <= now_s + 1e-9) m_nextDue_s += m_settings.update_interval_s;
+    return m_applied;
 }
 
 LiveUpdate LiveThermalCompensation::makeUpdate(double due_s) {
     // One O(cells) pass for every position (ScrewThermalModel's prefix sum).
-    const std::vector<double> error_um = model_.thermalError_um(positions_mm_);
-    LiveUpdate next = applied_;
-    next.time_s = model_.time_s();
+    const std::vector<double> error_um = m_model.thermalError_um(m_positions_mm);
+    LiveUpdate next = m_applied;
+    next.time_s = m_model.time_s();
     next.due_s = due_s;
     next.limited = false;
-    const double limit = settings_.max_change_um;
+    const double limit = m_settings.max_change_um;
     for (std::size_t i = 0; i < next.table_correction_um.size(); ++i)
         next.limited |= approach(next.table_correction_um[i], -error_um[i], limit);
     next.limited |= approach(next.offset_um, -error_um.back(), limit);

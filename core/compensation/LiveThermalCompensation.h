@@ -58,18 +58,18 @@ public:
     /// The correction the model asks for now, before limits and gating (µm).
     double targetOffsetUm() const;
     /// What is applied: zero until the first update.
-    const LiveUpdate& applied() const { return applied_; }
-    bool updatePending() const { return pendingSince_s_.has_value(); }
+    const LiveUpdate& applied() const { return m_applied; }
+    bool updatePending() const { return m_pendingSince_s.has_value(); }
 
 private:
     LiveUpdate makeUpdate(double due_s);
 
-    physics::ScrewThermalModel model_;
-    LiveSettings settings_;
-    LiveUpdate applied_;
-    double nextDue_s_ = 0;
-    std::optional<double> pendingSince_s_;
-    std::vector<double> positions_mm_;  ///< table positions then the offset position
+    physics::ScrewThermalModel m_model;
+    LiveSettings m_settings;
+    LiveUpdate m_applied;
+    double m_nextDue_s = 0;
+    std::optional<double> m_pendingSince_s;
+    std::vector<double> m_positions_mm;  ///< table positions then the offset position
 };
 
 }  // namespace driftlab::compensation

@@ -48,41 +48,41 @@ double scaleOf(const models::FreeParameter& p, double value) {
 StepSimulation::StepSimulation(std::shared_ptr<const models::HeatTransferModel> model,
                                std::vector<CandidateEffect> effects,
                                const std::vector<models::RunData>& train)
-    : model_(std::move(model)),
-      effects_(std::move(effects)),
-      train_(train),
-      simulation_(model_->options(), [&] {
+    : m_model(std::move(model)),
+      m_effects(std::move(effects)),
+      m_train(train),
+      m_simulation(m_model->options(), [&] {
           std::vector<CandidateEffect> simulated;
-          for (const CandidateEffect& e : effects_)
+          for (const CandidateEffect& e : m_effects)
               if (!e.output_only) simulated.push_back(e);
           return extendedModel(simulated, {});
       }()) {
     // The heat parameters: the base model's, and those of the effects that
     // change the simulation.
-    const std::vector<std::size_t> offsets = offsetsOf(effects_);
+    const std::vector<std::size_t> offsets = offsetsOf(m_effects);
     for (std::size_t i = 0; i < models::baseScrewModel().parameters.size(); ++i)
-        simulated_.push_back(i);
-    for (std::size_t e = 0; e < effects_.size(); ++e)
-        if (!effects_[e].output_only)
-            for (std::size_t k = 0; k < effects_[e].parameters.size(); ++k)
-                simulated_.push_back(offsets[e] + k);
-    for (const models::RunData& run : train_) inputs_.push_back(simulation_.prepared(run));
-    linearised_ = linearise(simulatedOf(model_->values()));
+        m_simulated.push_back(i);
+    for (std::size_t e = 0; e < m_effects.size(); ++e)
+        if (!m_effects[e].output_only)
+            for (std::size_t k = 0; k < m_effects[e].parameters.size(); ++k)
+                m_simulated.push_back(offsets[e] + k);
+    for (const models::RunData& run : m_train) m_inputs.push_back(m_simulation.prepared(run));
+    m_linearised = linearise(simulatedOf(m_model->values()));
 }
 
 std::vector<double> StepSimulation::simulatedOf(const std::vector<double>& values) const {
     std::vector<double> at;
-    for (std::size_t i : simulated_) at.push_back(values[i]);
+    for (std::size_t i : m_simulated) at.push_back(values[i]);
     return at;
 }
 
 StepSimulation::Linearised StepSimulation::linearise(std::vector<double> at) const {
     Linearised l;
     l.at = std::move(at);
-    const auto& free = simulation_.variant().parameters;
-    for (std::size_t r = 0; r < train_.size(); ++r) {
-        const auto points = train_[r].observationPoints();
-        l.base.push_back(simulation_.simulate(l.at.data(), train_[r], inputs_[r], points));
+    const auto& free = m_simulation.variant().parameters;
+    for (std::size_t r = 0; r < m_train.size(); ++r) {
+        const auto points = m_train[r].observationPoints();
+        l.base.push_back(m_simulation.simulate(l.at.data(), m_train[r], m_inputs[r], points));
         std::vector<ScrewRunOutputs> slopes;
         for (std::size_t j = 0; j < l.at.size(); ++j) {
             std::vector<double> moved = l.at;
@@ -90,7 +90,7 @@ StepSimulation::Linearised StepSimulation::linearise(std::vector<double> at) con
             if (moved[j] + step > free[j].upper) step = -step;
             moved[j] += step;
             ScrewRunOutputs slope =
-                simulation_.simulate(moved.data(), train_[r], inputs_[r], points);
+                m_simulation.simulate(moved.data(), m_train[r], m_inputs[r], points);
             addScaled(slope, l.base.back(), -1);
             for (double& e : slope.error_um) e /= step;
             for (auto& s : slope.sensor_C)
@@ -105,10 +105,10 @@ StepSimulation::Linearised StepSimulation::linearise(std::vector<double> at) con
 std::optional<FittedExtension> StepSimulation::fit(const CandidateEffect& candidate,
                                                    const std::vector<double>& ownStart,
                                                    const std::function<bool()>& cancelled) const {
-    std::vector<CandidateEffect> effects = effects_;
+    std::vector<CandidateEffect> effects = m_effects;
     effects.push_back(candidate);
     const std::vector<std::size_t> offsets = offsetsOf(effects);
-    std::vector<double> start = model_->values();
+    std::vector<double> start = m_model->values();
     start.insert(start.end(), ownStart.begin(), ownStart.end());
     const models::ScrewModelVariant variant = extendedModel(effects, start);
     const auto& free = variant.parameters;
@@ -116,34 +116,34 @@ std::optional<FittedExtension> StepSimulation::fit(const CandidateEffect& candid
     std::vector<double> values;
     for (const auto& p : free) values.push_back(p.initial);
 
-    const models::HeatTransferOptions& options = model_->options();
+    const models::HeatTransferOptions& options = m_model->options();
     int residualCount = 0;
-    for (std::size_t r = 0; r < train_.size(); ++r)
-        residualCount += int(model_->readingCount(train_[r], inputs_[r]));
+    for (std::size_t r = 0; r < m_train.size(); ++r)
+        residualCount += int(m_model->readingCount(m_train[r], m_inputs[r]));
     bool changesInputs = false;
     for (const CandidateEffect& e : effects)
         changesInputs = changesInputs || (e.output_only && e.inputs);
 
-    Linearised l = linearised_;
+    Linearised l = m_linearised;
     auto evaluate = [&](const double* p, double* residuals) {
-        for (std::size_t r = 0; r < train_.size(); ++r) {
+        for (std::size_t r = 0; r < m_train.size(); ++r) {
             ScrewRunOutputs out = l.base[r];
-            for (std::size_t j = 0; j < simulated_.size(); ++j)
-                addScaled(out, l.slope[r][j], p[simulated_[j]] - l.at[j]);
+            for (std::size_t j = 0; j < m_simulated.size(); ++j)
+                addScaled(out, l.slope[r][j], p[m_simulated[j]] - l.at[j]);
             std::optional<ScrewRunInputs> changed;
             if (changesInputs) {
-                changed.emplace(inputs_[r]);
+                changed.emplace(m_inputs[r]);
                 for (std::size_t e = 0; e < effects.size(); ++e)
                     if (effects[e].output_only && effects[e].inputs)
                         effects[e].inputs(p + offsets[e], *changed);
             }
-            const ScrewRunInputs& in = changed ? *changed : inputs_[r];
-            const auto points = train_[r].observationPoints();
+            const ScrewRunInputs& in = changed ? *changed : m_inputs[r];
+            const auto points = m_train[r].observationPoints();
             for (std::size_t e = 0; e < effects.size(); ++e)
                 if (effects[e].output_only && effects[e].readings)
                     effects[e].readings(p + offsets[e], in, points, out);
             residuals +=
-                model_->normalisedResiduals(out, train_[r], in, options.huber_sigmas, residuals);
+                m_model->normalisedResiduals(out, m_train[r], in, options.huber_sigmas, residuals);
         }
         return true;
     };
@@ -170,9 +170,9 @@ std::optional<FittedExtension> StepSimulation::fit(const CandidateEffect& candid
         iterations += int(solved.iterations.size());
         if ((cancelled && cancelled()) || !solved.IsSolutionUsable()) return std::nullopt;
         bool far = false;
-        for (std::size_t j = 0; j < simulated_.size(); ++j)
-            far = far || std::abs(values[simulated_[j]] - l.at[j]) >
-                             kRelinearise * scaleOf(free[simulated_[j]], l.at[j]);
+        for (std::size_t j = 0; j < m_simulated.size(); ++j)
+            far = far || std::abs(values[m_simulated[j]] - l.at[j]) >
+                             kRelinearise * scaleOf(free[m_simulated[j]], l.at[j]);
         if (!far || round + 1 == kMaxLinearisations) {
             // 1σ from the Jacobian at the solution, scaled by the residual
             // variance, as the identification reports it.

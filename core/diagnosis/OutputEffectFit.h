@@ -50,18 +50,18 @@ private:
         std::vector<std::vector<models::ScrewRunOutputs>> slope;  ///< per run, per parameter
     };
     Linearised linearise(std::vector<double> at) const;
-    /// The heat parameters' values among all of a variant's (`simulated_`).
+    /// The heat parameters' values among all of a variant's (`m_simulated`).
     std::vector<double> simulatedOf(const std::vector<double>& values) const;
 
-    std::shared_ptr<const models::HeatTransferModel> model_;
-    std::vector<CandidateEffect> effects_;
-    const std::vector<models::RunData>& train_;
+    std::shared_ptr<const models::HeatTransferModel> m_model;
+    std::vector<CandidateEffect> m_effects;
+    const std::vector<models::RunData>& m_train;
     /// The step's model without its effects on the readings: what the
-    /// simulation computes, of the parameters `simulated_` of the step's.
-    models::HeatTransferModel simulation_;
-    std::vector<std::size_t> simulated_;
-    std::vector<models::ScrewRunInputs> inputs_;  ///< per training run, prepared once
-    Linearised linearised_;
+    /// simulation computes, of the parameters `m_simulated` of the step's.
+    models::HeatTransferModel m_simulation;
+    std::vector<std::size_t> m_simulated;
+    std::vector<models::ScrewRunInputs> m_inputs;  ///< per training run, prepared once
+    Linearised m_linearised;
 };
 
 }  // namespace driftlab::diagnosis

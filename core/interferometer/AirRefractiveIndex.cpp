@@ -4,7 +4,7 @@
 
 #include "core/domain/MessageText.h"
 
-namespace driftlab {
+namespace driftlab::interferometer {
 namespace {
 
 constexpr double kKelvinOffset = 273.15;
@@ -105,4 +105,4 @@ std::optional<QString> airStateProblem(const AirState& air) {
     return std::nullopt;
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::interferometer

@@ -17,7 +17,7 @@
 #include <QString>
 #include <optional>
 
-namespace driftlab {
+namespace driftlab::interferometer {
 
 /// HeNe red line in vacuum (632.991 nm; 633 nm is the rounded value).
 inline constexpr double kHeNeVacuumWavelength_nm = 632.991;
@@ -55,4 +55,4 @@ double ciddorRefractiveIndex(const AirState& air,
 /// (kelvin; hPa, kPa or bar for Pa; a 0…1 fraction is not detectable), or nothing.
 std::optional<QString> airStateProblem(const AirState& air);
 
-}  // namespace driftlab
+}  // namespace driftlab::interferometer

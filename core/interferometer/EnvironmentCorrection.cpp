@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace driftlab {
+namespace driftlab::interferometer {
 
 EnvironmentCorrection noCorrection() {
     EnvironmentCorrection c;
@@ -39,4 +39,4 @@ double standardAirIndex(double vacuumWavelength_nm) {
     return edlenRefractiveIndex(AirState{20.0, 101'325.0, 50.0, 450.0}, vacuumWavelength_nm);
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::interferometer

@@ -18,7 +18,7 @@
 
 #include "core/interferometer/AirRefractiveIndex.h"
 
-namespace driftlab {
+namespace driftlab::interferometer {
 
 struct EnvironmentCorrection {
     bool applied = false;
@@ -49,4 +49,4 @@ EnvironmentCorrection edlenCorrection(const AirState& air, double assumedIndex,
 /// off: 20 °C, 101325 Pa, 50 %RH, 450 ppm CO2 by Edlén at the wavelength.
 double standardAirIndex(double vacuumWavelength_nm = kHeNeVacuumWavelength_nm);
 
-}  // namespace driftlab
+}  // namespace driftlab::interferometer

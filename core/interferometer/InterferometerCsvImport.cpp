@@ -7,7 +7,7 @@
 
 #include "core/bundle/CsvTable.h"
 
-namespace driftlab {
+namespace driftlab::interferometer {
 namespace {
 
 QByteArray exact(double value) {
@@ -23,11 +23,11 @@ InterferometerCsvImport importInterferometerCsv(const QString& path,
     const QString name = QFileInfo(path).fileName();
     auto file = std::make_unique<QFile>(path);
     if (!file->open(QIODevice::ReadOnly)) {
-        result.error = BundleError{name, 0, 0, file->errorString()};
+        result.error = bundle::BundleError{name, 0, 0, file->errorString()};
         return result;
     }
     try {
-        CsvTable table(std::move(file), name);
+        bundle::CsvTable table(std::move(file), name);
         const int time = table.requireColumn(QStringLiteral("time_s"));
         const int position = table.requireColumn(QStringLiteral("position_mm"));
         const int deviation = table.requireColumn(QStringLiteral("deviation_um"));
@@ -37,14 +37,16 @@ InterferometerCsvImport importInterferometerCsv(const QString& path,
         const int material = table.column(QStringLiteral("material_C"));
         const bool hasAir = air >= 0 && pressure >= 0 && humidity >= 0;
         if (!hasAir && (air >= 0 || pressure >= 0 || humidity >= 0))
-            throw BundleException({name, 1, 0,
-                                   QStringLiteral("air_C, pressure_Pa and humidity_pct come "
-                                                  "together: one or two of them is not the air")});
+            throw bundle::BundleException(
+                {name, 1, 0,
+                 QStringLiteral("air_C, pressure_Pa and humidity_pct come "
+                                "together: one or two of them is not the air")});
         if (!header.compensationOn && !hasAir)
-            throw BundleException({name, 1, 0,
-                                   QStringLiteral("the interferometer's compensation was off but "
-                                                  "the file has no air_C, pressure_Pa and "
-                                                  "humidity_pct columns to correct it with")});
+            throw bundle::BundleException(
+                {name, 1, 0,
+                 QStringLiteral("the interferometer's compensation was off but "
+                                "the file has no air_C, pressure_Pa and "
+                                "humidity_pct columns to correct it with")});
 
         // The parser's field names map back to this file's columns for errors.
         const auto columnOf = [&](const QString& field) {
@@ -90,10 +92,10 @@ InterferometerCsvImport importInterferometerCsv(const QString& path,
                 table.fail(columnOf(e.field()), e.message());
             }
         }
-    } catch (const BundleException& e) {
+    } catch (const bundle::BundleException& e) {
         result.error = e.error;
     }
     return result;
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::interferometer

@@ -23,16 +23,16 @@
 #include "core/bundle/BundleError.h"
 #include "core/interferometer/InterferometerSession.h"
 
-namespace driftlab {
+namespace driftlab::interferometer {
 
 struct InterferometerCsvImport {
-    std::vector<CorrectedReading> readings;  ///< `line` is the CSV line
-    QString correction;                      ///< the last correction's description
-    std::optional<BundleError> error;        ///< the first bad row; readings before are kept
+    std::vector<CorrectedReading> readings;    ///< `line` is the CSV line
+    QString correction;                        ///< the last correction's description
+    std::optional<bundle::BundleError> error;  ///< the first bad row; readings before are kept
 };
 
 InterferometerCsvImport importInterferometerCsv(const QString& path,
                                                 const InterferometerHeader& header,
                                                 double maxEnvironmentAge_s = 300.0);
 
-}  // namespace driftlab
+}  // namespace driftlab::interferometer

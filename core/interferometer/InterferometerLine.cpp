@@ -7,7 +7,7 @@
 #include "core/bundle/ValueLimits.h"
 #include "core/domain/MessageText.h"
 
-namespace driftlab {
+namespace driftlab::interferometer {
 namespace {
 
 /// Beyond 100 m no feed axis reaches: a position in µm given as mm.
@@ -61,7 +61,7 @@ double InterferometerLineParser::number(std::string_view text, const QString& fi
 }
 
 void InterferometerLineParser::checkTime(double time_s, const QString& field) {
-    if (const auto problem = impossibleTime(time_s)) fail(field, *problem);
+    if (const auto problem = bundle::impossibleTime(time_s)) fail(field, *problem);
     if (m_lastTime_s && time_s < *m_lastTime_s)
         fail(field, QStringLiteral("time goes back from %1 s to %2 s")
                         .arg(numberText(*m_lastTime_s), numberText(time_s)));
@@ -155,7 +155,8 @@ InterferometerLine InterferometerLineParser::parse(std::string_view text) {
         env.air.humidity_pct = number(fields[4], QStringLiteral("humidity_pct"));
         if (fields.size() == 6) {
             env.material_C = number(fields[5], QStringLiteral("material_C"));
-            if (const auto problem = impossibleValue(Quantity::Temperature, *env.material_C))
+            if (const auto problem =
+                    bundle::impossibleValue(Quantity::Temperature, *env.material_C))
                 fail(QStringLiteral("material_C"), *problem);
         }
         // Name the field the range problem is in: check one quantity at a time.
@@ -189,11 +190,11 @@ InterferometerLine InterferometerLineParser::parse(std::string_view text) {
         fail(QStringLiteral("position_mm"),
              QStringLiteral("%1 mm is beyond ±%2 mm (µm instead of mm?)")
                  .arg(numberText(r.position_mm), numberText(kMaxPositionMm)));
-    if (const auto problem = impossibleDeviation(r.deviation_um))
+    if (const auto problem = bundle::impossibleDeviation(r.deviation_um))
         fail(QStringLiteral("deviation_um"), *problem);
     checkTime(r.time_s, QStringLiteral("time_s"));
     line.kind = InterferometerLine::Kind::Position;
     return line;
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::interferometer

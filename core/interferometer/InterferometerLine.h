@@ -19,7 +19,7 @@
 
 #include "core/interferometer/AirRefractiveIndex.h"
 
-namespace driftlab {
+namespace driftlab::interferometer {
 
 struct InterferometerHeader {
     bool compensationOn = true;
@@ -87,4 +87,4 @@ private:
     std::optional<double> m_lastTime_s;
 };
 
-}  // namespace driftlab
+}  // namespace driftlab::interferometer

@@ -1,6 +1,6 @@
 #include "core/interferometer/InterferometerSession.h"
 
-namespace driftlab {
+namespace driftlab::interferometer {
 
 std::optional<CorrectedReading> InterferometerSession::feed(std::string_view text) {
     const InterferometerLine line = m_parser.parse(text);
@@ -52,4 +52,4 @@ std::optional<CorrectedReading> InterferometerSession::feed(std::string_view tex
     return out;
 }
 
-}  // namespace driftlab
+}  // namespace driftlab::interferometer

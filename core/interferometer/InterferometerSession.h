@@ -10,7 +10,7 @@
 #include "core/interferometer/EnvironmentCorrection.h"
 #include "core/interferometer/InterferometerLine.h"
 
-namespace driftlab {
+namespace driftlab::interferometer {
 
 struct CorrectedReading {
     int line = 0;             ///< line of the stream it came from
@@ -43,4 +43,4 @@ private:
     EnvironmentCorrection m_correction;  ///< of m_environment, computed once per env line
 };
 
-}  // namespace driftlab
+}  // namespace driftlab::interferometer

@@ -9,7 +9,7 @@
 
 namespace driftlab::models {
 
-AllRisesHeatModel::AllRisesHeatModel(RisesHeatOptions options) : options_(options) {}
+AllRisesHeatModel::AllRisesHeatModel(RisesHeatOptions options) : m_options(options) {}
 
 QString AllRisesHeatModel::describe() const {
     return QStringLiteral(
@@ -20,14 +20,14 @@ QString AllRisesHeatModel::describe() const {
 
 Eigen::MatrixXd AllRisesHeatModel::design(const RunData& run,
                                           const std::vector<PredictionPoint>& at) const {
-    return withHeatAndOffset(risesAt(run, channels_, at), spindleHeatAt(run, heat_, at, name()));
+    return withHeatAndOffset(risesAt(run, m_channels, at), spindleHeatAt(run, m_heat, at, name()));
 }
 
 FitSummary AllRisesHeatModel::fitRuns(const std::vector<RunData>& training) {
     FitSummary summary;
-    heat_ = {};
-    const RisesHeatSearch search(training, name(), options_, summary);
-    channels_ = search.channels();
+    m_heat = {};
+    const RisesHeatSearch search(training, name(), m_options, summary);
+    m_channels = search.channels();
     auto score = [&](std::size_t candidate) {
         if (cancelRequested())
             throw ModelError(QStringLiteral("model '%1': fit cancelled").arg(name()));
@@ -39,7 +39,7 @@ FitSummary AllRisesHeatModel::fitRuns(const std::vector<RunData>& training) {
         throw ModelError(QStringLiteral("model '%1': the training runs are too few to "
                                         "cross-validate every rise (%2 channels)")
                              .arg(name())
-                             .arg(channels_.size()));
+                             .arg(m_channels.size()));
     // The heat must earn its place as `arx-all`'s does: a lower
     // cross-validated RMS by 2 %.
     double best = withoutHeat;
@@ -47,7 +47,7 @@ FitSummary AllRisesHeatModel::fitRuns(const std::vector<RunData>& training) {
         const double cv = score(c);
         if (cv < best && simplestNearBest({withoutHeat, cv}) == 1) {
             best = cv;
-            heat_ = search.heats()[c];
+            m_heat = search.heats()[c];
         }
     }
 
@@ -55,32 +55,32 @@ FitSummary AllRisesHeatModel::fitRuns(const std::vector<RunData>& training) {
         training, [&](const RunData& run) { return design(run, run.observationPoints()); });
     const Eigen::VectorXd observed = stackRows(training, &RunData::observedErrors);
     const LeastSquaresFit fit = solveLeastSquares(X, observed);
-    coefficients_ = fit.coefficients;
-    for (qsizetype k = 0; k < channels_.size(); ++k)
-        summary.parameters[channels_[k] + QStringLiteral(".a")] = {
+    m_coefficients = fit.coefficients;
+    for (qsizetype k = 0; k < m_channels.size(); ++k)
+        summary.parameters[m_channels[k] + QStringLiteral(".a")] = {
             fit.coefficients[k], fit.sigma[k], QStringLiteral("µm/K")};
-    reportHeatAndOffset(summary, fit.coefficients, fit.sigma, heat_, channels_.size());
+    reportHeatAndOffset(summary, fit.coefficients, fit.sigma, m_heat, m_channels.size());
     summary.metrics[QStringLiteral("cv_rms_um")] = best;
     summary.metrics[QStringLiteral("r2")] = rSquared(fit.rss, observed);
     if (!search.heatNote().isEmpty()) summary.notes << search.heatNote();
-    summary.notes << (heat_.none()
+    summary.notes << (m_heat.none()
                           ? QStringLiteral("every rise (%1 channels) and one offset; no lagged "
                                            "heat lowered the cross-validated RMS by 2 % (%2 µm)")
-                                .arg(channels_.size())
+                                .arg(m_channels.size())
                                 .arg(best, 0, 'g', 3)
                           : QStringLiteral("every rise (%1 channels), one offset and %2, by "
                                            "cross-validation (RMS %3 µm; %4 µm without it)")
-                                .arg(channels_.size())
-                                .arg(heat_.describe())
+                                .arg(m_channels.size())
+                                .arg(m_heat.describe())
                                 .arg(best, 0, 'g', 3)
                                 .arg(withoutHeat, 0, 'g', 3));
-    summary.inputs = channels_;
+    summary.inputs = m_channels;
     return summary;
 }
 
 Eigen::VectorXd AllRisesHeatModel::predictRun(const RunData& run,
                                               const std::vector<PredictionPoint>& at) const {
-    return design(run, at) * coefficients_;
+    return design(run, at) * m_coefficients;
 }
 
 }  // namespace driftlab::models

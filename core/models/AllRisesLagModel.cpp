@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "core/models/CrossValidation.h"
-#include "core/models/DynamicRegressionSearch.h"
+#include "core/models/LaggedSensorsSearch.h"
 #include "core/models/LeastSquares.h"
 #include "core/models/ModelError.h"
 #include "core/models/RisesHeatSearch.h"
@@ -33,7 +33,7 @@ std::vector<int> runOfEachRow(const std::vector<RunData>& runs) {
 
 }  // namespace
 
-AllRisesLagModel::AllRisesLagModel(AllRisesLagOptions options) : options_(options) {}
+AllRisesLagModel::AllRisesLagModel(AllRisesLagOptions options) : m_options(options) {}
 
 QString AllRisesLagModel::describe() const {
     return QStringLiteral(
@@ -52,39 +52,39 @@ Eigen::MatrixXd AllRisesLagModel::design(const RunData& run,
         lags.conservativeResize(Eigen::NoChange, lags.cols() + 1);
         lags.rightCols(1) = column;
     };
-    if (lagged_ >= 0)
-        add(lagResponse(arx::riseInput(run, channels_[qsizetype(lagged_)]), tau_s_, times));
-    if (heatExponent_ > 0)
-        add(lagResponse(spindleHeatInput(run, heatExponent_, name()), heatTau_s_, times));
+    if (m_lagged >= 0)
+        add(lagResponse(arx::riseInput(run, m_channels[qsizetype(m_lagged)]), m_tau_s, times));
+    if (m_heatExponent > 0)
+        add(lagResponse(spindleHeatInput(run, m_heatExponent, name()), m_heatTau_s, times));
     const Eigen::VectorXd dx =
         run.positionDependent() ? positionsFromFixedEnd(run, at) : Eigen::VectorXd();
-    return allRisesDesign(risesAt(run, channels_, at), lags, dx);
+    return allRisesDesign(risesAt(run, m_channels, at), lags, dx);
 }
 
 FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
-    if (!(options_.min_tau_s > 0) || !(options_.max_tau_s > options_.min_tau_s) ||
-        !(options_.tau_step > 1))
+    if (!(m_options.min_tau_s > 0) || !(m_options.max_tau_s > m_options.min_tau_s) ||
+        !(m_options.tau_step > 1))
         throw ModelError(QStringLiteral(
             "model 'arx-all' needs a time-constant grid with 0 < min < max and a step above 1"));
     FitSummary summary;
-    channels_.clear();
-    lagged_ = -1;
-    tau_s_ = 0;
-    heatExponent_ = 0;
-    heatTau_s_ = 0;
+    m_channels.clear();
+    m_lagged = -1;
+    m_tau_s = 0;
+    m_heatExponent = 0;
+    m_heatTau_s = 0;
     // Every channel takes part statically; only those that rise above their
     // noise are lag candidates (below).
-    channels_ = arx::usableChannels(training, QStringLiteral("arx-all"), false, summary);
+    m_channels = arx::usableChannels(training, QStringLiteral("arx-all"), false, summary);
 
     std::vector<RunData> search;
     for (const RunData& run : training)
-        search.push_back(thinnedRun(run, options_.search_rows_per_run));
-    const std::vector<int> folds = crossValidationFolds(search, options_.time_blocks);
+        search.push_back(thinnedRun(run, m_options.search_rows_per_run));
+    const std::vector<int> folds = crossValidationFolds(search, m_options.time_blocks);
     const Eigen::VectorXd y = stackRows(search, &RunData::observedErrors);
     // What every candidate shares, computed once: the rises and the positions.
     const bool positionDependent = training.front().positionDependent();
     const Eigen::MatrixXd everyRise = stackRows(search, [&](const RunData& run) {
-        return risesAt(run, channels_, run.observationPoints());
+        return risesAt(run, m_channels, run.observationPoints());
     });
     Eigen::VectorXd dx;  // empty for a drift channel
     if (positionDependent)
@@ -126,21 +126,21 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     if (!std::isfinite(withoutLag.rms_um))
         throw ModelError(QStringLiteral("model 'arx-all': the training runs are too few to "
                                         "cross-validate every rise (%1 channels)")
-                             .arg(channels_.size()));
+                             .arg(m_channels.size()));
     arx::SetScore best = withoutLag;
     Eigen::VectorXd bestRiseLag;
-    for (int j = 0; j < int(channels_.size()); ++j) {
-        if (!arx::risesAboveItsNoise(training, channels_[j])) continue;
+    for (int j = 0; j < int(m_channels.size()); ++j) {
+        if (!arx::risesAboveItsNoise(training, m_channels[j])) continue;
         const std::vector<PiecewiseInput> inputs =
-            inputsOf([&](const RunData& run) { return arx::riseInput(run, channels_[j]); });
-        for (double tau = options_.min_tau_s; tau <= options_.max_tau_s * 1.0001;
-             tau *= options_.tau_step) {
+            inputsOf([&](const RunData& run) { return arx::riseInput(run, m_channels[j]); });
+        for (double tau = m_options.min_tau_s; tau <= m_options.max_tau_s * 1.0001;
+             tau *= m_options.tau_step) {
             const Eigen::VectorXd lag = lagColumn(inputs, tau);
             const arx::SetScore cv = scoreWith(lag);
             if (cv.rms_um < best.rms_um) {
                 best = cv;
-                lagged_ = j;
-                tau_s_ = tau;
+                m_lagged = j;
+                m_tau_s = tau;
                 bestRiseLag = lag;
             }
         }
@@ -149,8 +149,8 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     // cross-validated RMS by 2 % (a difference at rounding is none).
     if (simplestNearBest({withoutLag.rms_um, best.rms_um}) == 0) {
         best = withoutLag;
-        lagged_ = -1;
-        tau_s_ = 0;
+        m_lagged = -1;
+        m_tau_s = 0;
         bestRiseLag.resize(0);
     }
 
@@ -186,10 +186,10 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
         }
     }
     for (std::size_t e = 0; e < heatInputs.size(); ++e)
-        for (double tau = options_.min_tau_s;
+        for (double tau = m_options.min_tau_s;
              tau <=
-             std::min(options_.max_tau_s, shortest_s * options_.max_heat_tau_of_run) * 1.0001;
-             tau *= options_.tau_step) {
+             std::min(m_options.max_tau_s, shortest_s * m_options.max_heat_tau_of_run) * 1.0001;
+             tau *= m_options.tau_step) {
             Eigen::MatrixXd lags(everyRise.rows(), bestRiseLag.size() > 0 ? 2 : 1);
             if (bestRiseLag.size() > 0) lags.col(0) = bestRiseLag;
             lags.rightCols(1) = lagColumn(heatInputs[e], tau);
@@ -197,8 +197,8 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
             // The same bar as the lagged rise's: 2 % below the RMS without it.
             if (cv.rms_um < best.rms_um && simplestNearBest({withoutHeat, cv.rms_um}) == 1) {
                 best = cv;
-                heatExponent_ = int(e) + 1;
-                heatTau_s_ = tau;
+                m_heatExponent = int(e) + 1;
+                m_heatTau_s = tau;
             }
         }
 
@@ -208,10 +208,10 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     if (!positionDependent) X = arx::withRunZeros(X, runOfEachRow(training), int(training.size()));
     const Eigen::VectorXd observed = stackRows(training, &RunData::observedErrors);
     const LeastSquaresFit fit = solveLeastSquares(X, observed);
-    coefficients_ = fit.coefficients.head(gains);
-    offset_um_ = !positionDependent && best.commonZero
-                     ? fit.coefficients.tail(X.cols() - gains).mean()
-                     : 0.0;
+    m_coefficients = fit.coefficients.head(gains);
+    m_offset_um = !positionDependent && best.commonZero
+                      ? fit.coefficients.tail(X.cols() - gains).mean()
+                      : 0.0;
 
     const QStringList lags = reportGains(summary, fit, positionDependent);
     if (!positionDependent)
@@ -222,15 +222,15 @@ FitSummary AllRisesLagModel::fitRuns(const std::vector<RunData>& training) {
     summary.notes << (lags.isEmpty()
                           ? QStringLiteral("every rise (%1 channels); no lag lowered the "
                                            "cross-validated RMS by 2 % (%2 µm)")
-                                .arg(channels_.size())
+                                .arg(m_channels.size())
                                 .arg(best.rms_um, 0, 'g', 3)
                           : QStringLiteral("every rise (%1 channels), and %2, by "
                                            "cross-validation (RMS %3 µm; %4 µm without a lag)")
-                                .arg(channels_.size())
+                                .arg(m_channels.size())
                                 .arg(lags.join(QStringLiteral(" and ")))
                                 .arg(best.rms_um, 0, 'g', 3)
                                 .arg(withoutLag.rms_um, 0, 'g', 3));
-    summary.inputs = channels_;
+    summary.inputs = m_channels;
     return summary;
 }
 
@@ -238,7 +238,7 @@ QStringList AllRisesLagModel::reportGains(FitSummary& summary, const LeastSquare
                                           bool positionDependent) const {
     // Columns: every rise, the lagged rise, the lagged heat, then their
     // position gains or the offset.
-    const auto rises = Eigen::Index(channels_.size());
+    const auto rises = Eigen::Index(m_channels.size());
     auto put = [&](const QString& key, Eigen::Index column, const QString& unit) {
         summary.parameters[key] = {fit.coefficients[column], fit.sigma[column], unit};
     };
@@ -253,31 +253,31 @@ QStringList AllRisesLagModel::reportGains(FitSummary& summary, const LeastSquare
             tau_s, std::numeric_limits<double>::quiet_NaN(), QStringLiteral("s")};
     };
     for (Eigen::Index k = 0; k < rises; ++k) {
-        put(channels_[k] + QStringLiteral(".a"), k, QStringLiteral("µm/K"));
+        put(m_channels[k] + QStringLiteral(".a"), k, QStringLiteral("µm/K"));
         if (positionDependent)
-            put(channels_[k] + QStringLiteral(".b"), features() + k, QStringLiteral("µm/(K·mm)"));
+            put(m_channels[k] + QStringLiteral(".b"), features() + k, QStringLiteral("µm/(K·mm)"));
     }
     Eigen::Index column = rises;
     QStringList lags;
-    if (lagged_ >= 0) {
-        putLag(channels_[qsizetype(lagged_)], column++, QStringLiteral("K"), tau_s_);
+    if (m_lagged >= 0) {
+        putLag(m_channels[qsizetype(m_lagged)], column++, QStringLiteral("K"), m_tau_s);
         lags << QStringLiteral("%1 through a lag of %2")
-                    .arg(channels_[qsizetype(lagged_)], arx::minutesOrHours(tau_s_));
+                    .arg(m_channels[qsizetype(m_lagged)], arx::minutesOrHours(m_tau_s));
     }
-    if (heatExponent_ > 0) {
+    if (m_heatExponent > 0) {
         const QString speed =
-            heatExponent_ == 1 ? QStringLiteral("speed") : QStringLiteral("speed²");
+            m_heatExponent == 1 ? QStringLiteral("speed") : QStringLiteral("speed²");
         putLag(speed, column++,
-               heatExponent_ == 1 ? QStringLiteral("krpm") : QStringLiteral("krpm²"), heatTau_s_);
+               m_heatExponent == 1 ? QStringLiteral("krpm") : QStringLiteral("krpm²"), m_heatTau_s);
         lags << QStringLiteral("the spindle's %1 through a lag of %2")
-                    .arg(speed, arx::minutesOrHours(heatTau_s_));
+                    .arg(speed, arx::minutesOrHours(m_heatTau_s));
     }
     return lags;
 }
 
 Eigen::VectorXd AllRisesLagModel::predictRun(const RunData& run,
                                              const std::vector<PredictionPoint>& at) const {
-    return (design(run, at) * coefficients_).array() + offset_um_;
+    return (design(run, at) * m_coefficients).array() + m_offset_um;
 }
 
 }  // namespace driftlab::models

@@ -55,22 +55,22 @@ private:
     Eigen::MatrixXd design(const RunData& run, const std::vector<PredictionPoint>& at) const;
     /// The gains per position (every rise, then the lags chosen).
     Eigen::Index features() const {
-        return Eigen::Index(channels_.size()) + (lagged_ >= 0 ? 1 : 0) +
-               (heatExponent_ > 0 ? 1 : 0);
+        return Eigen::Index(m_channels.size()) + (m_lagged >= 0 ? 1 : 0) +
+               (m_heatExponent > 0 ? 1 : 0);
     }
     /// Puts every fitted gain and time constant into the summary; returns the
     /// lags chosen, described for the note.
     QStringList reportGains(FitSummary& summary, const LeastSquaresFit& fit,
                             bool positionDependent) const;
 
-    AllRisesLagOptions options_;
-    QStringList channels_;
-    int lagged_ = -1;  ///< index in channels_; −1: no lagged rise
-    double tau_s_ = 0;
-    int heatExponent_ = 0;  ///< of the spindle's speed; 0: no lagged heat input
-    double heatTau_s_ = 0;
-    Eigen::VectorXd coefficients_;  ///< the gains; a drift channel's run zeros apart
-    double offset_um_ = 0;          ///< a drift channel's predicted offset
+    AllRisesLagOptions m_options;
+    QStringList m_channels;
+    int m_lagged = -1;  ///< index in m_channels; −1: no lagged rise
+    double m_tau_s = 0;
+    int m_heatExponent = 0;  ///< of the spindle's speed; 0: no lagged heat input
+    double m_heatTau_s = 0;
+    Eigen::VectorXd m_coefficients;  ///< the gains; a drift channel's run zeros apart
+    double m_offset_um = 0;          ///< a drift channel's predicted offset
 };
 
 }  // namespace driftlab::models

@@ -44,9 +44,9 @@ QString AutoModel::describe() const {
 }
 
 FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
-    chosen_.clear();
-    weights_.clear();
-    validation_ = {};
+    m_chosen.clear();
+    m_weights.clear();
+    m_validation = {};
     const std::vector<ValidationFold> folds = validationFolds(training);
     const auto cancelled = [this] { return cancelRequested(); };
     // Each family's held-out predictions on the same readings; a family that
@@ -86,17 +86,17 @@ FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
         model->setCancelCheck(cancelled);
         FitSummary fit = model->fit(training);
         if (!fit.success) throw ModelError(fit.message);
-        chosen_.push_back(std::move(model));
-        weights_.push_back(choice.weights[m]);
+        m_chosen.push_back(std::move(model));
+        m_weights.push_back(choice.weights[m]);
         fits.push_back(std::move(fit));
     }
-    if (chosen_.empty()) {
+    if (m_chosen.empty()) {
         // No compensation is the best there is: its predictions are zero.
-        chosen_.push_back(std::make_unique<NoCompensationModel>());
-        weights_.push_back(1.0);
-        fits.push_back(chosen_.back()->fit(training));
+        m_chosen.push_back(std::make_unique<NoCompensationModel>());
+        m_weights.push_back(1.0);
+        fits.push_back(m_chosen.back()->fit(training));
     }
-    validation_ =
+    m_validation =
         validationOf(choice.predictions, training.front().positionDependent(), training.size());
     FitSummary summary = fits.size() == 1 ? fits.front() : combined(fits);
 
@@ -117,9 +117,9 @@ FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
                                 .arg(choice.stack_weights[std::size_t(f)], 0, 'f', 2);
         }
     if (choice.kind != CombinationChoice::Kind::None) {
-        summary.metrics[QStringLiteral("auto_cv_rms_um.chosen")] = validation_.rms_um;
-        for (std::size_t m = 0; m < chosen_.size(); ++m)
-            summary.metrics[QStringLiteral("auto_weight.") + chosen_[m]->name()] = weights_[m];
+        summary.metrics[QStringLiteral("auto_cv_rms_um.chosen")] = m_validation.rms_um;
+        for (std::size_t m = 0; m < m_chosen.size(); ++m)
+            summary.metrics[QStringLiteral("auto_weight.") + m_chosen[m]->name()] = m_weights[m];
     }
     const QString how = describeValidationFolds(training.size());
     const QString listed =
@@ -146,7 +146,7 @@ FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
                          "auto chose %1%2 by cross-validation over the training runs (%3): "
                          "%4; %5, not 2 % below the mean's %6 µm")
                          .arg(chosen(),
-                              chosen_.size() > 1
+                              m_chosen.size() > 1
                                   ? QStringLiteral(" (their mean: each within one standard "
                                                    "error of the best score)")
                                   : QString(),
@@ -155,12 +155,12 @@ FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
             break;
         case CombinationChoice::Kind::Stacked: {
             QStringList weights;
-            for (double w : weights_) weights << QString::number(w, 'f', 2);
+            for (double w : m_weights) weights << QString::number(w, 'f', 2);
             notes << QStringLiteral(
                          "auto chose %1 (%2) by cross-validation over the training runs (%3): "
                          "%4; the mean of the near-best %5 µm")
                          .arg(chosen(),
-                              chosen_.size() > 1
+                              m_chosen.size() > 1
                                   ? QStringLiteral("stacked, weights %1: %2 µm cross-validated")
                                         .arg(weights.join(QStringLiteral(" + ")))
                                         .arg(choice.stack_rms_um, 0, 'g', 3)
@@ -184,7 +184,7 @@ FitSummary AutoModel::fitRuns(const std::vector<RunData>& training) {
 
 QString AutoModel::chosen() const {
     QStringList names;
-    for (const auto& model : chosen_) names << model->name();
+    for (const auto& model : m_chosen) names << model->name();
     return names.join(QStringLiteral(" + "));
 }
 
@@ -192,7 +192,7 @@ FitSummary AutoModel::combined(const std::vector<FitSummary>& fits) const {
     // Each family's figures under its own name: "arx/T_spindle.tau".
     FitSummary summary;
     for (std::size_t m = 0; m < fits.size(); ++m) {
-        const QString family = chosen_[m]->name();
+        const QString family = m_chosen[m]->name();
         for (const auto& [key, value] : fits[m].parameters)
             summary.parameters[family + QLatin1Char('/') + key] = value;
         for (const auto& [key, value] : fits[m].metrics)
@@ -209,11 +209,11 @@ FitSummary AutoModel::combined(const std::vector<FitSummary>& fits) const {
 Eigen::VectorXd AutoModel::predictRun(const RunData& run,
                                       const std::vector<PredictionPoint>& at) const {
     Eigen::VectorXd sum = Eigen::VectorXd::Zero(Eigen::Index(at.size()));
-    for (std::size_t m = 0; m < chosen_.size(); ++m) {
-        const Prediction p = chosen_[m]->predict(run, at);
+    for (std::size_t m = 0; m < m_chosen.size(); ++m) {
+        const Prediction p = m_chosen[m]->predict(run, at);
         if (!p.ok()) throw ModelError(p.error);
-        sum += weights_[m] * Eigen::Map<const Eigen::VectorXd>(p.error_um.data(),
-                                                               Eigen::Index(p.error_um.size()));
+        sum += m_weights[m] * Eigen::Map<const Eigen::VectorXd>(p.error_um.data(),
+                                                                Eigen::Index(p.error_um.size()));
     }
     return sum;
 }

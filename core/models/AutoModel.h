@@ -33,11 +33,11 @@ public:
     /// nothing beats no compensation; empty before a fit.
     QString chosen() const;
     /// Their weights, in the same order, summing to one.
-    const std::vector<double>& weights() const { return weights_; }
+    const std::vector<double>& weights() const { return m_weights; }
     /// The cross-validation of the choice (its held-out predictions on the
     /// folds it was chosen on: slightly optimistic, as every choice on the
     /// data it is judged by; the held-out runs' coverage checks it).
-    const Validation& validation() const { return validation_; }
+    const Validation& validation() const { return m_validation; }
 
 protected:
     FitSummary fitRuns(const std::vector<RunData>& training) override;
@@ -49,9 +49,9 @@ private:
     /// parameters, metrics and notes under its name.
     FitSummary combined(const std::vector<FitSummary>& fits) const;
 
-    std::vector<std::unique_ptr<ThermalErrorModel>> chosen_;
-    std::vector<double> weights_;
-    Validation validation_;
+    std::vector<std::unique_ptr<ThermalErrorModel>> m_chosen;
+    std::vector<double> m_weights;
+    Validation m_validation;
 };
 
 }  // namespace driftlab::models

@@ -33,13 +33,13 @@ ceres::CostFunction* numericCost(std::function<bool(const double*, double*)> eva
 /// Cancel); the solve then ends with termination type USER_FAILURE.
 class CancelCallback : public ceres::IterationCallback {
 public:
-    explicit CancelCallback(std::function<bool()> cancelled) : cancelled_(std::move(cancelled)) {}
+    explicit CancelCallback(std::function<bool()> cancelled) : m_cancelled(std::move(cancelled)) {}
     ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
-        return cancelled_ && cancelled_() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+        return m_cancelled && m_cancelled() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
     }
 
 private:
-    std::function<bool()> cancelled_;
+    std::function<bool()> m_cancelled;
 };
 
 }  // namespace driftlab::models

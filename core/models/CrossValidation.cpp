@@ -55,19 +55,19 @@ double crossValidatedRms(const Eigen::MatrixXd& X, const Eigen::VectorXd& y,
 
 FoldNormalEquations::FoldNormalEquations(const Eigen::MatrixXd& X, const Eigen::VectorXd& y,
                                          const std::vector<int>& folds)
-    : X_(X), y_(y), folds_(folds) {
+    : X_(X), y_(y), m_folds(folds) {
     const int foldCount = folds.empty() ? 0 : *std::max_element(folds.begin(), folds.end()) + 1;
     for (int f = 0; f < foldCount; ++f) {
         std::vector<Eigen::Index> rows;
         for (std::size_t i = 0; i < folds.size(); ++i)
             if (folds[i] == f) rows.push_back(Eigen::Index(i));
-        heldOutX_.push_back(X(rows, Eigen::all));
-        heldOutY_.push_back(y(rows));
-        gram_.push_back(heldOutX_.back().transpose() * heldOutX_.back());
-        moment_.push_back(heldOutX_.back().transpose() * heldOutY_.back());
+        m_heldOutX.push_back(X(rows, Eigen::all));
+        m_heldOutY.push_back(y(rows));
+        m_gram.push_back(m_heldOutX.back().transpose() * m_heldOutX.back());
+        m_moment.push_back(m_heldOutX.back().transpose() * m_heldOutY.back());
     }
-    totalGram_ = X.transpose() * X;
-    totalMoment_ = X.transpose() * y;
+    m_totalGram = X.transpose() * X;
+    m_totalMoment = X.transpose() * y;
 }
 
 double FoldNormalEquations::crossValidatedRms(const std::vector<Eigen::Index>& columns) const {
@@ -76,26 +76,26 @@ double FoldNormalEquations::crossValidatedRms(const std::vector<Eigen::Index>& c
     constexpr double kWellConditioned = 1e8;
     const auto k = Eigen::Index(columns.size());
     double heldOutSquares = 0;
-    for (std::size_t f = 0; f < gram_.size(); ++f) {
-        const Eigen::Index heldOutRows = heldOutY_[f].size();
+    for (std::size_t f = 0; f < m_gram.size(); ++f) {
+        const Eigen::Index heldOutRows = m_heldOutY[f].size();
         if (heldOutRows == 0) continue;
-        if (Eigen::Index(folds_.size()) - heldOutRows <= k)
+        if (Eigen::Index(m_folds.size()) - heldOutRows <= k)
             return std::numeric_limits<double>::infinity();
-        const Eigen::MatrixXd G = totalGram_(columns, columns) - gram_[f](columns, columns);
-        const Eigen::VectorXd b = totalMoment_(columns) - moment_[f](columns);
+        const Eigen::MatrixXd G = m_totalGram(columns, columns) - m_gram[f](columns, columns);
+        const Eigen::VectorXd b = m_totalMoment(columns) - m_moment[f](columns);
         // Unit diagonal, as solveLeastSquares scales its columns to unit norm.
         const Eigen::VectorXd scale = G.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
         const Eigen::MatrixXd unit = scale.asDiagonal() * G * scale.asDiagonal();
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(unit, Eigen::EigenvaluesOnly);
         const Eigen::VectorXd& lambda = eigen.eigenvalues();
         if (!(lambda.minCoeff() > lambda.maxCoeff() / kWellConditioned))
-            return models::crossValidatedRms(X_(Eigen::all, columns), y_, folds_);
+            return models::crossValidatedRms(X_(Eigen::all, columns), y_, m_folds);
         const Eigen::VectorXd beta = scale.asDiagonal() * unit.llt().solve(scale.asDiagonal() * b);
         // The residual itself, not yᵀy − 2βᵀXᵀy + βᵀXᵀXβ: that difference of
         // large numbers would bury a residual near the noise in rounding.
-        heldOutSquares += (heldOutY_[f] - heldOutX_[f](Eigen::all, columns) * beta).squaredNorm();
+        heldOutSquares += (m_heldOutY[f] - m_heldOutX[f](Eigen::all, columns) * beta).squaredNorm();
     }
-    return std::sqrt(heldOutSquares / double(folds_.size()));
+    return std::sqrt(heldOutSquares / double(m_folds.size()));
 }
 
 std::size_t simplestNearBest(const std::vector<double>& scores, double tolerance) {

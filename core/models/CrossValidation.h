@@ -39,13 +39,13 @@ public:
 private:
     const Eigen::MatrixXd& X_;
     const Eigen::VectorXd& y_;
-    const std::vector<int>& folds_;
-    std::vector<Eigen::MatrixXd> heldOutX_;  ///< per fold: its rows of X
-    std::vector<Eigen::VectorXd> heldOutY_;  ///< per fold: its rows of y
-    std::vector<Eigen::MatrixXd> gram_;      ///< per fold: X_fᵀX_f
-    std::vector<Eigen::VectorXd> moment_;    ///< per fold: X_fᵀy_f
-    Eigen::MatrixXd totalGram_;
-    Eigen::VectorXd totalMoment_;
+    const std::vector<int>& m_folds;
+    std::vector<Eigen::MatrixXd> m_heldOutX;  ///< per fold: its rows of X
+    std::vector<Eigen::VectorXd> m_heldOutY;  ///< per fold: its rows of y
+    std::vector<Eigen::MatrixXd> m_gram;      ///< per fold: X_fᵀX_f
+    std::vector<Eigen::VectorXd> m_moment;    ///< per fold: X_fᵀy_f
+    Eigen::MatrixXd m_totalGram;
+    Eigen::VectorXd m_totalMoment;
 };
 
 /// Of candidates ordered simplest first, the simplest whose score is within

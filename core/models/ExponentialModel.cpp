@@ -15,14 +15,14 @@ std::vector<LagTerm> sourceTerms(int sources) {
 }  // namespace
 
 ExponentialModel::ExponentialModel(ExponentialOptions options)
-    : LagModel(sourceTerms(options.sources), options.search), sources_(options.sources) {}
+    : LagModel(sourceTerms(options.sources), options.search), m_sources(options.sources) {}
 
 QString ExponentialModel::describe() const {
     return QStringLiteral(
                "%1 heat source(s) driven by the screw (or spindle) speed, each rising "
                "and decaying exponentially with its own time constant, with a gain "
                "linear in position.")
-        .arg(sources_);
+        .arg(m_sources);
 }
 
 std::vector<PiecewiseInput> ExponentialModel::inputs(const RunData& run) const {

@@ -28,7 +28,7 @@ protected:
     QStringList inputSignals(const RunData& run) const override;
 
 private:
-    int sources_;
+    int m_sources;
 };
 
 }  // namespace driftlab::models

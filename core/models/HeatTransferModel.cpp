@@ -63,11 +63,11 @@ ScrewModelVariant baseScrewModel(bool material) {
 }
 
 HeatTransferModel::HeatTransferModel(HeatTransferOptions options, ScrewModelVariant variant)
-    : options_(options), variant_(std::move(variant)) {}
+    : m_options(options), m_variant(std::move(variant)) {}
 
 HeatTransferModel::HeatTransferModel(HeatTransferOptions options, ScrewModelVariant variant,
                                      std::vector<double> values)
-    : options_(options), variant_(std::move(variant)), values_(std::move(values)) {
+    : m_options(options), m_variant(std::move(variant)), m_values(std::move(values)) {
     markFitted({});
 }
 
@@ -78,23 +78,23 @@ QString HeatTransferModel::describe() const {
                "identified from screw temperatures and positioning errors")
         .arg([&] {
             QStringList n;
-            for (const auto& p : variant_.parameters) n << p.name;
+            for (const auto& p : m_variant.parameters) n << p.name;
             return n.join(QStringLiteral(", "));
         }());
 }
 
 physics::ScrewThermalParameters HeatTransferModel::parametersWith(const double* values,
                                                                   const RunData& run) const {
-    physics::ScrewThermalParameters p = screwParameters(run, {}, options_.cells);
+    physics::ScrewThermalParameters p = screwParameters(run, {}, m_options.cells);
     p.density_kg_m3 = run.screw->density_kg_m3;
     p.specific_heat_J_kgK = run.screw->specific_heat_J_kgK;
     p.conductivity_W_mK = run.screw->conductivity_W_mK;
-    variant_.physics(values, p);
+    m_variant.physics(values, p);
     return p;
 }
 
 ScrewRunInputs HeatTransferModel::prepared(const RunData& run) const {
-    return prepareScrewRun(run, options_.dt_s, name(), options_.room, options_.cells);
+    return prepareScrewRun(run, m_options.dt_s, name(), m_options.room, m_options.cells);
 }
 
 std::optional<physics::ScrewThermalParameters> HeatTransferModel::fittedScrew(const RunData& run,
@@ -107,7 +107,7 @@ std::optional<physics::ScrewThermalParameters> HeatTransferModel::fittedScrew(co
         if (why) *why = problem;
         return std::nullopt;
     }
-    return parametersWith(values_.data(), run);
+    return parametersWith(m_values.data(), run);
 }
 
 ScrewRunOutputs HeatTransferModel::simulate(const double* values, const RunData& run,
@@ -116,16 +116,16 @@ ScrewRunOutputs HeatTransferModel::simulate(const double* values, const RunData&
     // An effect on the inputs works on a copy: the prepared run serves every
     // evaluation of the fit.
     std::optional<ScrewRunInputs> changed;
-    if (variant_.inputs) variant_.inputs(values, changed.emplace(inputs));
+    if (m_variant.inputs) m_variant.inputs(values, changed.emplace(inputs));
     const ScrewRunInputs& in = changed ? *changed : inputs;
     ScrewRunOutputs out = simulateScrewRun(in, parametersWith(values, run), at);
-    if (variant_.readings) variant_.readings(values, in, at, out);
+    if (m_variant.readings) m_variant.readings(values, in, at, out);
     return out;
 }
 
 Eigen::VectorXd HeatTransferModel::predictRun(const RunData& run,
                                               const std::vector<PredictionPoint>& at) const {
-    const auto out = simulate(values_.data(), run, prepared(run), at);
+    const auto out = simulate(m_values.data(), run, prepared(run), at);
     return Eigen::Map<const Eigen::VectorXd>(out.error_um.data(),
                                              Eigen::Index(out.error_um.size()));
 }
@@ -143,13 +143,13 @@ std::size_t HeatTransferModel::normalisedResiduals(const ScrewRunOutputs& sim, c
     std::size_t i = 0;
     for (std::size_t o = 0; o < run.observations.size(); ++o)
         out[i++] =
-            robust((run.observations[o].error_um - sim.error_um[o]) / options_.error_sigma_um,
+            robust((run.observations[o].error_um - sim.error_um[o]) / m_options.error_sigma_um,
                    huberSigmas);
-    if (!options_.fit_temperatures) return i;
+    if (!m_options.fit_temperatures) return i;
     for (std::size_t s = 0; s < inputs.sensors.size(); ++s)
         for (std::size_t j = 0; j < sim.sensor_C[s].size(); ++j)
             out[i++] = robust((inputs.sensors[s].measured_C[j] - sim.sensor_C[s][j]) /
-                                  options_.temperature_sigma_K,
+                                  m_options.temperature_sigma_K,
                               huberSigmas);
     return i;
 }
@@ -157,7 +157,7 @@ std::size_t HeatTransferModel::normalisedResiduals(const ScrewRunOutputs& sim, c
 std::size_t HeatTransferModel::readingCount(const RunData& run,
                                             const ScrewRunInputs& inputs) const {
     std::size_t count = run.observations.size();
-    if (options_.fit_temperatures)
+    if (m_options.fit_temperatures)
         for (const auto& s : inputs.sensors) count += s.time_s.size();
     return count;
 }
@@ -169,28 +169,28 @@ double HeatTransferModel::cost(const std::vector<double>& values,
     for (const RunData& run : runs) {
         const ScrewRunInputs inputs = prepared(run);
         r.resize(readingCount(run, inputs));
-        writeResiduals(values.data(), run, inputs, options_.huber_sigmas, r.data());
+        writeResiduals(values.data(), run, inputs, m_options.huber_sigmas, r.data());
         for (double v : r) sum += v * v / 2;
     }
     return sum;
 }
 
 ReadingResiduals HeatTransferModel::residuals(const RunData& run) const {
-    if (values_.empty()) throw ModelError(QStringLiteral("model '%1' is not fitted").arg(name()));
+    if (m_values.empty()) throw ModelError(QStringLiteral("model '%1' is not fitted").arg(name()));
     const ScrewRunInputs inputs = prepared(run);
     const std::size_t count = readingCount(run, inputs);
     std::vector<double> r(count);
-    writeResiduals(values_.data(), run, inputs, INFINITY, r.data());
+    writeResiduals(m_values.data(), run, inputs, INFINITY, r.data());
     ReadingResiduals out;
     out.run_id = run.run_id;
     out.points = run.observationPoints();
     std::size_t i = 0;
-    for (; i < out.points.size(); ++i) out.error_um.push_back(r[i] * options_.error_sigma_um);
-    if (options_.fit_temperatures)
+    for (; i < out.points.size(); ++i) out.error_um.push_back(r[i] * m_options.error_sigma_um);
+    if (m_options.fit_temperatures)
         for (const auto& s : inputs.sensors) {
             ReadingResiduals::Sensor sensor{s.channel_id, s.role, s.time_s, {}};
             for (std::size_t j = 0; j < s.time_s.size(); ++j)
-                sensor.residual_K.push_back(r[i++] * options_.temperature_sigma_K);
+                sensor.residual_K.push_back(r[i++] * m_options.temperature_sigma_K);
             out.sensors.push_back(std::move(sensor));
         }
     for (double v : r) out.normalizedSquares += v * v;
@@ -210,7 +210,7 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     for (const RunData& run : training) {
         inputs.push_back(prepared(run));
         residualCount += int(run.observations.size());
-        if (options_.fit_temperatures)
+        if (m_options.fit_temperatures)
             for (const auto& s : inputs.back().sensors) temperatureCount += int(s.time_s.size());
     }
     residualCount += temperatureCount;
@@ -218,7 +218,7 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
         throw ModelError(
             QStringLiteral("model '%1': the training runs have no readings").arg(name()));
 
-    const auto& free = variant_.parameters;
+    const auto& free = m_variant.parameters;
     const int n = int(free.size());
     std::vector<double> values;
     for (const auto& p : free) values.push_back(p.initial);
@@ -226,7 +226,7 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     auto evaluate = [&](const double* p, double* r) {
         try {
             for (std::size_t k = 0; k < training.size(); ++k)
-                r += writeResiduals(p, training[k], inputs[k], options_.huber_sigmas, r);
+                r += writeResiduals(p, training[k], inputs[k], m_options.huber_sigmas, r);
             return true;
         } catch (const std::invalid_argument&) {
             return false;  // parameters the physics refuses: Ceres shortens the step
@@ -242,9 +242,9 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
     }
     ceres::Solver::Options solverOptions;
     solverOptions.linear_solver_type = ceres::DENSE_QR;
-    solverOptions.max_num_iterations = options_.max_iterations;
-    solverOptions.function_tolerance = options_.function_tolerance;
-    solverOptions.parameter_tolerance = options_.parameter_tolerance;
+    solverOptions.max_num_iterations = m_options.max_iterations;
+    solverOptions.function_tolerance = m_options.function_tolerance;
+    solverOptions.parameter_tolerance = m_options.parameter_tolerance;
     solverOptions.logging_type = ceres::SILENT;
     CancelCallback cancel([this] { return cancelRequested(); });
     solverOptions.callbacks.push_back(&cancel);
@@ -327,7 +327,7 @@ FitSummary HeatTransferModel::fitRuns(const std::vector<RunData>& training) {
                           .arg(training.size())
                           .arg(summary.iterations)
                           .arg(seconds, 0, 'f', 2);
-    values_ = values;
+    m_values = values;
     return summary;
 }
 

@@ -86,11 +86,11 @@ public:
     QString describe() const override;
 
     /// The fitted values, in the variant's order.
-    const std::vector<double>& values() const { return values_; }
-    const ScrewModelVariant& variant() const { return variant_; }
+    const std::vector<double>& values() const { return m_values; }
+    const ScrewModelVariant& variant() const { return m_variant; }
     /// What the fitted model misses on a run (throws ModelError on bad data).
     ReadingResiduals residuals(const RunData& run) const;
-    const HeatTransferOptions& options() const { return options_; }
+    const HeatTransferOptions& options() const { return m_options; }
     /// The screw of `run` with the fitted coefficients: what live compensation
     /// steps online. None (and why) before a fit or without a screw.
     std::optional<physics::ScrewThermalParameters> fittedScrew(const RunData& run,
@@ -115,7 +115,7 @@ protected:
     Eigen::VectorXd predictRun(const RunData& run,
                                const std::vector<PredictionPoint>& at) const override;
     /// For a model that chooses its free parameters from the data (sensorless).
-    void setVariant(ScrewModelVariant variant) { variant_ = std::move(variant); }
+    void setVariant(ScrewModelVariant variant) { m_variant = std::move(variant); }
     /// What the fit minimises, ½Σ of the robust normalised residuals, at `values`.
     double cost(const std::vector<double>& values, const std::vector<RunData>& runs) const;
 
@@ -126,9 +126,9 @@ private:
                                const ScrewRunInputs& inputs, double huberSigmas, double* out) const;
     physics::ScrewThermalParameters parametersWith(const double* values, const RunData& run) const;
 
-    HeatTransferOptions options_;
-    ScrewModelVariant variant_;
-    std::vector<double> values_;
+    HeatTransferOptions m_options;
+    ScrewModelVariant m_variant;
+    std::vector<double> m_values;
 };
 
 }  // namespace driftlab::models

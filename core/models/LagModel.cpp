@@ -7,7 +7,7 @@
 namespace driftlab::models {
 
 LagModel::LagModel(std::vector<LagTerm> terms, LagSearchOptions options)
-    : regression_(std::move(terms), options) {}
+    : m_regression(std::move(terms), options) {}
 
 LagCase LagModel::lagCase(const RunData& run, const std::vector<PredictionPoint>& at) const {
     LagCase c;
@@ -24,14 +24,14 @@ FitSummary LagModel::fitRuns(const std::vector<RunData>& training) {
         cases.push_back(lagCase(run, run.observationPoints()));
         observed.push_back(run.observedErrors());
     }
-    FitSummary summary = regression_.fit(cases, observed, training.front().positionDependent());
+    FitSummary summary = m_regression.fit(cases, observed, training.front().positionDependent());
     summary.inputs = inputSignals(training.front());
     return summary;
 }
 
 Eigen::VectorXd LagModel::predictRun(const RunData& run,
                                      const std::vector<PredictionPoint>& at) const {
-    return regression_.predict(lagCase(run, at));
+    return m_regression.predict(lagCase(run, at));
 }
 
 }  // namespace driftlab::models

@@ -28,7 +28,7 @@ protected:
 private:
     LagCase lagCase(const RunData& run, const std::vector<PredictionPoint>& at) const;
 
-    LaggedRegression regression_;
+    LaggedRegression m_regression;
 };
 
 }  // namespace driftlab::models

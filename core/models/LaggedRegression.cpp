@@ -38,29 +38,29 @@ QString gainUnit(const QString& inputUnit, bool perMm) {
 }  // namespace
 
 LaggedRegression::LaggedRegression(std::vector<LagTerm> terms, LagSearchOptions options)
-    : terms_(std::move(terms)), options_(options) {}
+    : m_terms(std::move(terms)), m_options(options) {}
 
 void LaggedRegression::validate(std::span<const LagCase> cases,
                                 const std::vector<Eigen::VectorXd>& observed) const {
-    if (!(options_.min_tau_s > 0) || !(options_.max_tau_s > options_.min_tau_s) ||
-        options_.grid_points < 2)
+    if (!(m_options.min_tau_s > 0) || !(m_options.max_tau_s > m_options.min_tau_s) ||
+        m_options.grid_points < 2)
         throw ModelError(
             QStringLiteral("the time-constant search needs 0 < min < max and at "
                            "least 2 grid points"));
-    if (terms_.empty() || terms_.size() > 3)
+    if (m_terms.empty() || m_terms.size() > 3)
         throw ModelError(QStringLiteral("a lag model takes 1 to 3 heat-source terms, not %1")
-                             .arg(terms_.size()));
+                             .arg(m_terms.size()));
     if (observed.size() != cases.size())
         throw ModelError(QStringLiteral("%1 training runs but %2 observation sets")
                              .arg(cases.size())
                              .arg(observed.size()));
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const Eigen::Index points = Eigen::Index(cases[i].time_s.size());
-        for (const LagTerm& term : terms_)
+        for (const LagTerm& term : m_terms)
             if (term.input >= cases[i].inputs.size())
                 throw ModelError(
                     QStringLiteral("term '%1' has no input in a training run").arg(term.name));
-        if (observed[i].size() != points || (position_dependent_ && cases[i].dx.size() != points))
+        if (observed[i].size() != points || (m_position_dependent && cases[i].dx.size() != points))
             throw ModelError(
                 QStringLiteral("a training run has not one observation and position "
                                "per point"));
@@ -71,14 +71,14 @@ Eigen::VectorXd LaggedRegression::termResponse(std::span<const LagCase> cases, s
                                                double tau_s) const {
     std::vector<Eigen::VectorXd> parts;
     for (const LagCase& c : cases)
-        parts.push_back(lagResponse(c.inputs[terms_[k].input], tau_s, c.time_s));
+        parts.push_back(lagResponse(c.inputs[m_terms[k].input], tau_s, c.time_s));
     return stacked(parts);
 }
 
 Eigen::MatrixXd LaggedRegression::responses(std::span<const LagCase> cases,
                                             const std::vector<double>& tau_s) const {
     std::vector<Eigen::VectorXd> columns;
-    for (std::size_t k = 0; k < terms_.size(); ++k)
+    for (std::size_t k = 0; k < m_terms.size(); ++k)
         columns.push_back(termResponse(cases, k, tau_s[k]));
     Eigen::MatrixXd F(columns.front().size(), Eigen::Index(columns.size()));
     for (std::size_t k = 0; k < columns.size(); ++k) F.col(Eigen::Index(k)) = columns[k];
@@ -87,16 +87,16 @@ Eigen::MatrixXd LaggedRegression::responses(std::span<const LagCase> cases,
 
 Eigen::MatrixXd LaggedRegression::design(const Eigen::MatrixXd& F,
                                          const Eigen::VectorXd& dx) const {
-    return position_dependent_ ? withPositionGain(F, dx) : F;
+    return m_position_dependent ? withPositionGain(F, dx) : F;
 }
 
 std::vector<double> LaggedRegression::gridSearch(std::span<const LagCase> cases,
                                                  const Eigen::VectorXd& dx,
                                                  const Eigen::VectorXd& y) const {
-    const int G = options_.grid_points;
-    const std::size_t K = terms_.size();
+    const int G = m_options.grid_points;
+    const std::size_t K = m_terms.size();
     std::vector<double> grid(std::size_t(G), 0.0);
-    const double lo = std::log(options_.min_tau_s), hi = std::log(options_.max_tau_s);
+    const double lo = std::log(m_options.min_tau_s), hi = std::log(m_options.max_tau_s);
     for (int g = 0; g < G; ++g) grid[std::size_t(g)] = std::exp(lo + (hi - lo) * g / (G - 1));
 
     // Responses for every grid τ, once per term: the search then only solves
@@ -107,14 +107,14 @@ std::vector<double> LaggedRegression::gridSearch(std::span<const LagCase> cases,
         if (byTerm[k].cwiseAbs().maxCoeff() == 0)
             throw ModelError(QStringLiteral("the input of '%1' is zero at every training "
                                             "observation: the training runs show no heat from it")
-                                 .arg(terms_[k].name));
+                                 .arg(m_terms[k].name));
     }
 
     // Terms on the same input are interchangeable: only ascending grid indices.
     auto admissible = [&](const std::vector<int>& index) {
         for (std::size_t k = 0; k < K; ++k)
             for (std::size_t j = 0; j < k; ++j)
-                if (terms_[j].input == terms_[k].input && index[k] <= index[j]) return false;
+                if (m_terms[j].input == m_terms[k].input && index[k] <= index[j]) return false;
         return true;
     };
     std::vector<int> index(K, 0), best;
@@ -144,7 +144,7 @@ std::vector<double> LaggedRegression::gridSearch(std::span<const LagCase> cases,
 
 std::vector<double> LaggedRegression::sortedPerInput(std::vector<double> tau_s) const {
     std::map<std::size_t, std::vector<std::size_t>> termsOfInput;
-    for (std::size_t k = 0; k < terms_.size(); ++k) termsOfInput[terms_[k].input].push_back(k);
+    for (std::size_t k = 0; k < m_terms.size(); ++k) termsOfInput[m_terms[k].input].push_back(k);
     for (const auto& [input, ks] : termsOfInput) {
         std::vector<double> values;
         for (std::size_t k : ks) values.push_back(tau_s[k]);
@@ -156,18 +156,18 @@ std::vector<double> LaggedRegression::sortedPerInput(std::vector<double> tau_s) 
 
 Eigen::MatrixXd LaggedRegression::jacobian(std::span<const LagCase> cases, const Eigen::MatrixXd& X,
                                            const Eigen::VectorXd& dx) const {
-    const Eigen::Index K = Eigen::Index(terms_.size());
+    const Eigen::Index K = Eigen::Index(m_terms.size());
     Eigen::MatrixXd J(X.rows(), K + X.cols());
     J.rightCols(X.cols()) = X;
     // Only term k's response depends on τ_k; it enters scaled by the term's gain.
     for (Eigen::Index k = 0; k < K; ++k) {
-        const double tau = tau_s_[std::size_t(k)];
+        const double tau = m_tau_s[std::size_t(k)];
         const Eigen::VectorXd slope =
             (termResponse(cases, std::size_t(k), tau * std::exp(kLogTauStep)) -
              termResponse(cases, std::size_t(k), tau * std::exp(-kLogTauStep))) /
             (2 * kLogTauStep);
-        Eigen::VectorXd gain = Eigen::VectorXd::Constant(X.rows(), gains_[k]);
-        if (position_dependent_) gain += gains_[K + k] * dx;
+        Eigen::VectorXd gain = Eigen::VectorXd::Constant(X.rows(), m_gains[k]);
+        if (m_position_dependent) gain += m_gains[K + k] * dx;
         J.col(k) = slope.cwiseProduct(gain);
     }
     return J;
@@ -176,21 +176,21 @@ Eigen::MatrixXd LaggedRegression::jacobian(std::span<const LagCase> cases, const
 FitSummary LaggedRegression::fit(const std::vector<LagCase>& cases,
                                  const std::vector<Eigen::VectorXd>& observed,
                                  bool positionDependent) {
-    position_dependent_ = positionDependent;
+    m_position_dependent = positionDependent;
     validate(cases, observed);
     std::vector<Eigen::VectorXd> dxParts;
     for (const LagCase& c : cases)
         dxParts.push_back(positionDependent ? c.dx
                                             : Eigen::VectorXd::Zero(Eigen::Index(c.time_s.size())));
     const Eigen::VectorXd y = stacked(observed), dx = stacked(dxParts);
-    const std::size_t K = terms_.size();
+    const std::size_t K = m_terms.size();
     const Eigen::Index parameterCount = Eigen::Index(K) * (positionDependent ? 3 : 2);
     if (y.size() <= parameterCount)
         throw ModelError(QStringLiteral("%1 training observations are too few for %2 parameters")
                              .arg(y.size())
                              .arg(parameterCount));
 
-    const double lo = std::log(options_.min_tau_s), hi = std::log(options_.max_tau_s);
+    const double lo = std::log(m_options.min_tau_s), hi = std::log(m_options.max_tau_s);
     // Variable projection: for given τ the gains are a linear least squares,
     // so Ceres searches log τ only (bounded to the grid's range), on the
     // residual left after the gains are solved for.
@@ -219,26 +219,26 @@ FitSummary LaggedRegression::fit(const std::vector<LagCase>& cases,
 
     std::vector<double> tau(K);
     for (std::size_t k = 0; k < K; ++k) tau[k] = std::exp(logTau[k]);
-    tau_s_ = sortedPerInput(tau);
-    const Eigen::MatrixXd X = design(responses(cases, tau_s_), dx);
+    m_tau_s = sortedPerInput(tau);
+    const Eigen::MatrixXd X = design(responses(cases, m_tau_s), dx);
     const LeastSquaresFit linear = solveLeastSquares(X, y);
-    gains_ = linear.coefficients;
+    m_gains = linear.coefficients;
     const Eigen::VectorXd sigma = parameterSigma(jacobian(cases, X, dx), linear.rss);
 
     FitSummary summary;
     summary.iterations = int(refined.iterations.size());
     const Eigen::Index n = Eigen::Index(K);
     for (Eigen::Index k = 0; k < n; ++k) {
-        const LagTerm& term = terms_[std::size_t(k)];
-        const double tau = tau_s_[std::size_t(k)];
+        const LagTerm& term = m_terms[std::size_t(k)];
+        const double tau = m_tau_s[std::size_t(k)];
         summary.parameters[term.name + QStringLiteral(".tau")] = {tau, tau * sigma[k],
                                                                   QStringLiteral("s")};
-        summary.parameters[term.name + QStringLiteral(".a")] = {gains_[k], sigma[n + k],
+        summary.parameters[term.name + QStringLiteral(".a")] = {m_gains[k], sigma[n + k],
                                                                 gainUnit(term.input_unit, false)};
         if (positionDependent)
             summary.parameters[term.name + QStringLiteral(".b")] = {
-                gains_[n + k], sigma[2 * n + k], gainUnit(term.input_unit, true)};
-        if (tau <= options_.min_tau_s * 1.001 || tau >= options_.max_tau_s * 0.999)
+                m_gains[n + k], sigma[2 * n + k], gainUnit(term.input_unit, true)};
+        if (tau <= m_options.min_tau_s * 1.001 || tau >= m_options.max_tau_s * 0.999)
             summary.notes << QStringLiteral(
                                  "the time constant of '%1' sits at the search bound "
                                  "(%2 s): the training runs do not pin it down")
@@ -255,8 +255,8 @@ FitSummary LaggedRegression::fit(const std::vector<LagCase>& cases,
 
 Eigen::VectorXd LaggedRegression::predict(const LagCase& c) const {
     const Eigen::VectorXd dx =
-        position_dependent_ ? c.dx : Eigen::VectorXd::Zero(Eigen::Index(c.time_s.size()));
-    return design(responses(std::span<const LagCase>(&c, 1), tau_s_), dx) * gains_;
+        m_position_dependent ? c.dx : Eigen::VectorXd::Zero(Eigen::Index(c.time_s.size()));
+    return design(responses(std::span<const LagCase>(&c, 1), m_tau_s), dx) * m_gains;
 }
 
 }  // namespace driftlab::models

@@ -62,11 +62,11 @@ private:
     void validate(std::span<const LagCase> cases,
                   const std::vector<Eigen::VectorXd>& observed) const;
 
-    std::vector<LagTerm> terms_;
-    LagSearchOptions options_;
-    bool position_dependent_ = true;
-    std::vector<double> tau_s_;
-    Eigen::VectorXd gains_;  ///< a_1..a_K, then b_1..b_K when position-dependent
+    std::vector<LagTerm> m_terms;
+    LagSearchOptions m_options;
+    bool m_position_dependent = true;
+    std::vector<double> m_tau_s;
+    Eigen::VectorXd m_gains;  ///< a_1..a_K, then b_1..b_K when position-dependent
 };
 
 }  // namespace driftlab::models

@@ -29,20 +29,20 @@ void forEachSubset(int n, int k, const std::function<void(const std::vector<int>
 
 }  // namespace
 
-MlrModel::MlrModel(MlrOptions options) : options_(options) {}
+MlrModel::MlrModel(MlrOptions options) : m_options(options) {}
 
 QString MlrModel::describe() const {
     return QStringLiteral(
                "Multiple linear regression of the thermal error on the temperature rises "
                "of up to %1 sensors chosen by cross-validation, each with a gain that "
                "grows linearly from the screw's fixed end.")
-        .arg(options_.max_sensors);
+        .arg(m_options.max_sensors);
 }
 
 Eigen::MatrixXd MlrModel::inputsAt(const RunData& run, const QStringList& channels,
                                    const std::vector<PredictionPoint>& at) const {
     Eigen::MatrixXd rises = risesAt(run, channels, at);
-    if (!ambient_.isEmpty()) rises.colwise() -= risesAt(run, {ambient_}, at).col(0);
+    if (!m_ambient.isEmpty()) rises.colwise() -= risesAt(run, {m_ambient}, at).col(0);
     return rises;
 }
 
@@ -55,14 +55,14 @@ Eigen::MatrixXd MlrModel::design(const Eigen::MatrixXd& inputs, const Eigen::Vec
 }
 
 FitSummary MlrModel::fitRuns(const std::vector<RunData>& training) {
-    if (options_.max_sensors < 1)
+    if (m_options.max_sensors < 1)
         throw ModelError(QStringLiteral("model 'mlr' needs at least one sensor (max_sensors)"));
     FitSummary summary;
     const bool positionDependent = training.front().positionDependent();
-    ambient_.clear();
-    if (options_.ambient_reference) {
-        ambient_ = channelForRole(training.front(), ChannelRole::Ambient, name()).channel_id;
-        for (const RunData& run : training) risesAt(run, {ambient_}, run.observationPoints());
+    m_ambient.clear();
+    if (m_options.ambient_reference) {
+        m_ambient = channelForRole(training.front(), ChannelRole::Ambient, name()).channel_id;
+        for (const RunData& run : training) risesAt(run, {m_ambient}, run.observationPoints());
     }
 
     // Candidates: every temperature channel but ambient that every training run can give.
@@ -96,11 +96,11 @@ FitSummary MlrModel::fitRuns(const std::vector<RunData>& training) {
 
     // Best subset of each size by cross-validation, then the simplest size
     // that is nearly as good as the best.
-    const std::vector<int> folds = crossValidationFolds(training, options_.time_blocks);
-    best_subsets_.clear();
+    const std::vector<int> folds = crossValidationFolds(training, m_options.time_blocks);
+    m_best_subsets.clear();
     std::vector<std::vector<int>> bestColumns;
     std::vector<double> scores;
-    const int largest = std::min(options_.max_sensors, int(candidates.size()));
+    const int largest = std::min(m_options.max_sensors, int(candidates.size()));
     const Eigen::MatrixXd everySensor = design(C, dx, positionDependent);
     const FoldNormalEquations normalEquations(everySensor, y, folds);
     const auto candidateCount = Eigen::Index(candidates.size());
@@ -123,7 +123,7 @@ FitSummary MlrModel::fitRuns(const std::vector<RunData>& training) {
         if (best.empty()) break;
         SubsetScore score{{}, bestScore};
         for (int j : best) score.sensors << candidates[j];
-        best_subsets_.push_back(score);
+        m_best_subsets.push_back(score);
         bestColumns.push_back(best);
         scores.push_back(bestScore);
     }
@@ -134,21 +134,21 @@ FitSummary MlrModel::fitRuns(const std::vector<RunData>& training) {
                              .arg(y.size())
                              .arg(training.size()));
 
-    sensors_ = best_subsets_[chosen].sensors;
+    m_sensors = m_best_subsets[chosen].sensors;
     const LeastSquaresFit fit =
         solveLeastSquares(design(C(Eigen::all, bestColumns[chosen]), dx, positionDependent), y);
-    coefficients_ = fit.coefficients;
-    const Eigen::Index m = sensors_.size();
+    m_coefficients = fit.coefficients;
+    const Eigen::Index m = m_sensors.size();
     for (Eigen::Index j = 0; j < m; ++j) {
-        const QString& s = sensors_[j];
-        summary.parameters[s + QStringLiteral(".a")] = {coefficients_[j], fit.sigma[j],
+        const QString& s = m_sensors[j];
+        summary.parameters[s + QStringLiteral(".a")] = {m_coefficients[j], fit.sigma[j],
                                                         QStringLiteral("µm/K")};
         if (positionDependent)
-            summary.parameters[s + QStringLiteral(".b")] = {coefficients_[m + j], fit.sigma[m + j],
+            summary.parameters[s + QStringLiteral(".b")] = {m_coefficients[m + j], fit.sigma[m + j],
                                                             QStringLiteral("µm/(K·mm)")};
     }
     if (!positionDependent)
-        summary.parameters[QStringLiteral("c")] = {coefficients_[m], fit.sigma[m],
+        summary.parameters[QStringLiteral("c")] = {m_coefficients[m], fit.sigma[m],
                                                    QStringLiteral("µm")};
     summary.metrics[QStringLiteral("cv_rms_um")] = scores[chosen];
     summary.metrics[QStringLiteral("r2")] = rSquared(fit.rss, y);
@@ -159,21 +159,21 @@ FitSummary MlrModel::fitRuns(const std::vector<RunData>& training) {
     summary.metrics[QStringLiteral("best_single_cv_rms_um")] = scores.front();
     summary.metrics[QStringLiteral("best_single_r2")] = singleR2;
     summary.notes << QStringLiteral("sensors chosen by cross-validation: %1")
-                         .arg(sensors_.join(QStringLiteral(", ")))
+                         .arg(m_sensors.join(QStringLiteral(", ")))
                   << QStringLiteral("best single sensor: %1 (R² = %2, cross-validated RMS %3 µm)")
-                         .arg(best_subsets_.front().sensors.front())
+                         .arg(m_best_subsets.front().sensors.front())
                          .arg(singleR2, 0, 'f', 4)
                          .arg(scores.front(), 0, 'g', 3);
-    summary.inputs = sensors_;
-    if (!ambient_.isEmpty()) summary.inputs << ambient_;
+    summary.inputs = m_sensors;
+    if (!m_ambient.isEmpty()) summary.inputs << m_ambient;
     return summary;
 }
 
 Eigen::VectorXd MlrModel::predictRun(const RunData& run,
                                      const std::vector<PredictionPoint>& at) const {
-    return design(inputsAt(run, sensors_, at), positionsFromFixedEnd(run, at),
+    return design(inputsAt(run, m_sensors, at), positionsFromFixedEnd(run, at),
                   run.positionDependent()) *
-           coefficients_;
+           m_coefficients;
 }
 
 }  // namespace driftlab::models

@@ -32,7 +32,7 @@ public:
     QString name() const override { return QStringLiteral("mlr"); }
     QString describe() const override;
     /// From the last fit: the best subset of each size, one sensor first.
-    const std::vector<SubsetScore>& bestSubsets() const { return best_subsets_; }
+    const std::vector<SubsetScore>& bestSubsets() const { return m_best_subsets; }
 
 protected:
     FitSummary fitRuns(const std::vector<RunData>& training) override;
@@ -47,11 +47,11 @@ private:
     static Eigen::MatrixXd design(const Eigen::MatrixXd& inputs, const Eigen::VectorXd& dx,
                                   bool positionDependent);
 
-    MlrOptions options_;
-    QString ambient_;  ///< the reference channel when ambient_reference
-    QStringList sensors_;
-    Eigen::VectorXd coefficients_;
-    std::vector<SubsetScore> best_subsets_;
+    MlrOptions m_options;
+    QString m_ambient;  ///< the reference channel when ambient_reference
+    QStringList m_sensors;
+    Eigen::VectorXd m_coefficients;
+    std::vector<SubsetScore> m_best_subsets;
 };
 
 }  // namespace driftlab::models

@@ -7,9 +7,9 @@
 #include "core/models/AllRisesHeatModel.h"
 #include "core/models/AllRisesLagModel.h"
 #include "core/models/AutoModel.h"
-#include "core/models/DynamicRegressionModel.h"
 #include "core/models/ExponentialModel.h"
 #include "core/models/HeatTransferModel.h"
+#include "core/models/LaggedSensorsModel.h"
 #include "core/models/MlrModel.h"
 #include "core/models/NoCompensationModel.h"
 #include "core/models/PolyPositionModel.h"
@@ -30,7 +30,7 @@ const std::vector<std::pair<QString, Maker>>& registry() {
         {QStringLiteral("exponential"), [] { return std::make_unique<ExponentialModel>(); }},
         {QStringLiteral("heat-transfer"), [] { return std::make_unique<HeatTransferModel>(); }},
         {QStringLiteral("sensorless"), [] { return std::make_unique<SensorlessModel>(); }},
-        {QStringLiteral("arx"), [] { return std::make_unique<DynamicRegressionModel>(); }},
+        {QStringLiteral("arx"), [] { return std::make_unique<LaggedSensorsModel>(); }},
         {QStringLiteral("arx-all"), [] { return std::make_unique<AllRisesLagModel>(); }},
         {QStringLiteral("lsall-heat"), [] { return std::make_unique<AllRisesHeatModel>(); }},
         {QStringLiteral("ridge-heat"), [] { return std::make_unique<RidgeHeatModel>(); }},

@@ -31,10 +31,10 @@ private:
     Eigen::MatrixXd design(const RunData& run, const std::vector<PredictionPoint>& at,
                            int degree) const;
 
-    PolyPositionOptions options_;
-    QString nut_, bearing_;
-    int degree_ = 0;
-    Eigen::VectorXd coefficients_;  ///< a_1..a_d, b, c
+    PolyPositionOptions m_options;
+    QString m_nut, m_bearing;
+    int m_degree = 0;
+    Eigen::VectorXd m_coefficients;  ///< a_1..a_d, b, c
 };
 
 }  // namespace driftlab::models

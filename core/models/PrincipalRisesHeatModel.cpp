@@ -13,7 +13,7 @@
 
 namespace driftlab::models {
 
-PrincipalRisesHeatModel::PrincipalRisesHeatModel(RisesHeatOptions options) : options_(options) {}
+PrincipalRisesHeatModel::PrincipalRisesHeatModel(RisesHeatOptions options) : m_options(options) {}
 
 QString PrincipalRisesHeatModel::describe() const {
     return QStringLiteral(
@@ -24,20 +24,20 @@ QString PrincipalRisesHeatModel::describe() const {
 
 Eigen::MatrixXd PrincipalRisesHeatModel::design(const RunData& run,
                                                 const std::vector<PredictionPoint>& at) const {
-    return withHeatAndOffset(risesAt(run, channels_, at), spindleHeatAt(run, heat_, at, name()));
+    return withHeatAndOffset(risesAt(run, m_channels, at), spindleHeatAt(run, m_heat, at, name()));
 }
 
 FitSummary PrincipalRisesHeatModel::fitRuns(const std::vector<RunData>& training) {
     FitSummary summary;
-    heat_ = {};
-    components_ = 0;
-    const RisesHeatSearch search(training, name(), options_, summary);
-    channels_ = search.channels();
-    const auto rises = Eigen::Index(channels_.size());
+    m_heat = {};
+    m_components = 0;
+    const RisesHeatSearch search(training, name(), m_options, summary);
+    m_channels = search.channels();
+    const auto rises = Eigen::Index(m_channels.size());
 
     // Standardised over every training row, the loadings from its SVD.
     const Eigen::MatrixXd all = stackRows(training, [&](const RunData& run) {
-        return risesAt(run, channels_, run.observationPoints());
+        return risesAt(run, m_channels, run.observationPoints());
     });
     const Eigen::RowVectorXd mean = all.colwise().mean();
     // A channel that stays still gives a zero column whatever its scale.
@@ -73,8 +73,8 @@ FitSummary PrincipalRisesHeatModel::fitRuns(const std::vector<RunData>& training
             const double cv = systems[c].crossValidatedRms(columns);
             if (cv < best) {
                 best = cv;
-                components_ = int(k);
-                heat_ = search.heats()[c];
+                m_components = int(k);
+                m_heat = search.heats()[c];
             }
         }
     }
@@ -86,53 +86,53 @@ FitSummary PrincipalRisesHeatModel::fitRuns(const std::vector<RunData>& training
 
     // The final fit on every observation, its gains carried back to the
     // rises: a = diag(1/σ)·V_k·β, and the offset less Σ a_j·μ_j.
-    const Eigen::MatrixXd V = loadings.leftCols(components_);
+    const Eigen::MatrixXd V = loadings.leftCols(m_components);
     Eigen::MatrixXd X = stackRows(training, [&](const RunData& run) {
         const std::vector<PredictionPoint> at = run.observationPoints();
         const Eigen::MatrixXd zr =
-            (risesAt(run, channels_, at).rowwise() - mean).array().rowwise() / scale.array();
-        return withHeatAndOffset(zr * V, spindleHeatAt(run, heat_, at, name()));
+            (risesAt(run, m_channels, at).rowwise() - mean).array().rowwise() / scale.array();
+        return withHeatAndOffset(zr * V, spindleHeatAt(run, m_heat, at, name()));
     });
     const Eigen::VectorXd observed = stackRows(training, &RunData::observedErrors);
     const LeastSquaresFit fit = solveLeastSquares(X, observed);
-    const Eigen::Index k = components_;
+    const Eigen::Index k = m_components;
     const Eigen::Index tail = fit.coefficients.size() - k;  // the heat's and the offset
-    coefficients_.resize(rises + tail);
-    coefficients_.head(rises) = (V * fit.coefficients.head(k)).array() / scale.transpose().array();
-    coefficients_.tail(tail) = fit.coefficients.tail(tail);
-    coefficients_[coefficients_.size() - 1] -= mean.dot(coefficients_.head(rises));
+    m_coefficients.resize(rises + tail);
+    m_coefficients.head(rises) = (V * fit.coefficients.head(k)).array() / scale.transpose().array();
+    m_coefficients.tail(tail) = fit.coefficients.tail(tail);
+    m_coefficients[m_coefficients.size() - 1] -= mean.dot(m_coefficients.head(rises));
 
     // The rises' gains and the offset come from the components' gains: no
     // 1σ is claimed for them here, the components' own are given.
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    Eigen::VectorXd sigma = Eigen::VectorXd::Constant(coefficients_.size(), nan);
+    Eigen::VectorXd sigma = Eigen::VectorXd::Constant(m_coefficients.size(), nan);
     sigma.segment(rises, tail - 1) = fit.sigma.segment(k, tail - 1);
     for (Eigen::Index i = 0; i < k; ++i)
         summary.parameters[QStringLiteral("pc%1.b").arg(i + 1)] = {
             fit.coefficients[i], fit.sigma[i], QStringLiteral("µm")};
     for (Eigen::Index j = 0; j < rises; ++j)
-        summary.parameters[channels_[j] + QStringLiteral(".a")] = {coefficients_[j], nan,
-                                                                   QStringLiteral("µm/K")};
-    reportHeatAndOffset(summary, coefficients_, sigma, heat_, rises);
+        summary.parameters[m_channels[j] + QStringLiteral(".a")] = {m_coefficients[j], nan,
+                                                                    QStringLiteral("µm/K")};
+    reportHeatAndOffset(summary, m_coefficients, sigma, m_heat, rises);
     summary.metrics[QStringLiteral("cv_rms_um")] = best;
-    summary.metrics[QStringLiteral("components")] = double(components_);
+    summary.metrics[QStringLiteral("components")] = double(m_components);
     summary.metrics[QStringLiteral("r2")] = rSquared(fit.rss, observed);
     if (!search.heatNote().isEmpty()) summary.notes << search.heatNote();
     summary.notes << QStringLiteral(
                          "the first %1 principal component(s) of the %2 standardised rises, "
                          "one offset%3, by cross-validation (RMS %4 µm)")
-                         .arg(components_)
+                         .arg(m_components)
                          .arg(rises)
-                         .arg(heat_.none() ? QStringLiteral(" and no lagged heat")
-                                           : QStringLiteral(" and ") + heat_.describe())
+                         .arg(m_heat.none() ? QStringLiteral(" and no lagged heat")
+                                            : QStringLiteral(" and ") + m_heat.describe())
                          .arg(best, 0, 'g', 3);
-    summary.inputs = channels_;
+    summary.inputs = m_channels;
     return summary;
 }
 
 Eigen::VectorXd PrincipalRisesHeatModel::predictRun(const RunData& run,
                                                     const std::vector<PredictionPoint>& at) const {
-    return design(run, at) * coefficients_;
+    return design(run, at) * m_coefficients;
 }
 
 }  // namespace driftlab::models

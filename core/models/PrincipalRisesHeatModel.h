@@ -38,11 +38,11 @@ private:
     /// gains carried back to each rise.
     Eigen::MatrixXd design(const RunData& run, const std::vector<PredictionPoint>& at) const;
 
-    RisesHeatOptions options_;
-    QStringList channels_;
-    SpindleHeat heat_;
-    int components_ = 0;
-    Eigen::VectorXd coefficients_;  ///< per rise, the heat's, the offset
+    RisesHeatOptions m_options;
+    QStringList m_channels;
+    SpindleHeat m_heat;
+    int m_components = 0;
+    Eigen::VectorXd m_coefficients;  ///< per rise, the heat's, the offset
 };
 
 }  // namespace driftlab::models

@@ -67,7 +67,7 @@ Eigen::VectorXd ridgeSolve(const Eigen::MatrixXd& gram, const Eigen::VectorXd& m
     return (qr.solve((moment.array() / scale.array()).matrix()).array() / scale.array()).matrix();
 }
 
-RidgeHeatModel::RidgeHeatModel(RisesHeatOptions options) : options_(options) {}
+RidgeHeatModel::RidgeHeatModel(RisesHeatOptions options) : m_options(options) {}
 
 QString RidgeHeatModel::describe() const {
     return QStringLiteral(
@@ -84,16 +84,16 @@ std::vector<double> RidgeHeatModel::penalties() {
 
 Eigen::MatrixXd RidgeHeatModel::design(const RunData& run,
                                        const std::vector<PredictionPoint>& at) const {
-    return withHeatAndOffset(risesAt(run, channels_, at), spindleHeatAt(run, heat_, at, name()));
+    return withHeatAndOffset(risesAt(run, m_channels, at), spindleHeatAt(run, m_heat, at, name()));
 }
 
 FitSummary RidgeHeatModel::fitRuns(const std::vector<RunData>& training) {
     FitSummary summary;
-    heat_ = {};
-    lambda_ = 0;
-    const RisesHeatSearch search(training, name(), options_, summary);
-    channels_ = search.channels();
-    const auto rises = Eigen::Index(channels_.size());
+    m_heat = {};
+    m_lambda = 0;
+    const RisesHeatSearch search(training, name(), m_options, summary);
+    m_channels = search.channels();
+    const auto rises = Eigen::Index(m_channels.size());
     const std::vector<double> lambdas = penalties();
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t c = 0; c < search.heats().size(); ++c) {
@@ -106,8 +106,8 @@ FitSummary RidgeHeatModel::fitRuns(const std::vector<RunData>& training) {
             const double cv = crossValidatedRidgeRms(systems, lambda, rises);
             if (cv < best) {
                 best = cv;
-                heat_ = search.heats()[c];
-                lambda_ = lambda;
+                m_heat = search.heats()[c];
+                m_lambda = lambda;
             }
         }
     }
@@ -115,7 +115,7 @@ FitSummary RidgeHeatModel::fitRuns(const std::vector<RunData>& training) {
         throw ModelError(QStringLiteral("model '%1': the training runs are too few to "
                                         "cross-validate every rise (%2 channels)")
                              .arg(name())
-                             .arg(channels_.size()));
+                             .arg(m_channels.size()));
 
     const Eigen::MatrixXd X = stackRows(
         training, [&](const RunData& run) { return design(run, run.observationPoints()); });
@@ -125,42 +125,42 @@ FitSummary RidgeHeatModel::fitRuns(const std::vector<RunData>& training) {
     // fitted beside them.
     Eigen::VectorXd sigma =
         Eigen::VectorXd::Constant(X.cols(), std::numeric_limits<double>::quiet_NaN());
-    if (lambda_ > 0) {
-        coefficients_ = ridgeSolve(X.transpose() * X, X.transpose() * observed, double(X.rows()),
-                                   lambda_, rises);
+    if (m_lambda > 0) {
+        m_coefficients = ridgeSolve(X.transpose() * X, X.transpose() * observed, double(X.rows()),
+                                    m_lambda, rises);
     } else {
         const LeastSquaresFit fit = solveLeastSquares(X, observed);
-        coefficients_ = fit.coefficients;
+        m_coefficients = fit.coefficients;
         sigma = fit.sigma;
     }
-    if (coefficients_.size() == 0)
+    if (m_coefficients.size() == 0)
         throw ModelError(QStringLiteral("model '%1': the heat and the offset cannot be told "
                                         "apart on the training runs")
                              .arg(name()));
     for (Eigen::Index k = 0; k < rises; ++k)
-        summary.parameters[channels_[k] + QStringLiteral(".a")] = {coefficients_[k], sigma[k],
-                                                                   QStringLiteral("µm/K")};
-    reportHeatAndOffset(summary, coefficients_, sigma, heat_, rises);
+        summary.parameters[m_channels[k] + QStringLiteral(".a")] = {m_coefficients[k], sigma[k],
+                                                                    QStringLiteral("µm/K")};
+    reportHeatAndOffset(summary, m_coefficients, sigma, m_heat, rises);
     summary.metrics[QStringLiteral("cv_rms_um")] = best;
-    summary.metrics[QStringLiteral("lambda")] = lambda_;
+    summary.metrics[QStringLiteral("lambda")] = m_lambda;
     summary.metrics[QStringLiteral("r2")] =
-        rSquared((observed - X * coefficients_).squaredNorm(), observed);
+        rSquared((observed - X * m_coefficients).squaredNorm(), observed);
     if (!search.heatNote().isEmpty()) summary.notes << search.heatNote();
     summary.notes << QStringLiteral(
                          "every rise (%1 channels) with a penalty λ = %2 on their gains, one "
                          "offset%3, by cross-validation (RMS %4 µm)")
-                         .arg(channels_.size())
-                         .arg(lambda_, 0, 'g', 3)
-                         .arg(heat_.none() ? QStringLiteral(" and no lagged heat")
-                                           : QStringLiteral(" and ") + heat_.describe())
+                         .arg(m_channels.size())
+                         .arg(m_lambda, 0, 'g', 3)
+                         .arg(m_heat.none() ? QStringLiteral(" and no lagged heat")
+                                            : QStringLiteral(" and ") + m_heat.describe())
                          .arg(best, 0, 'g', 3);
-    summary.inputs = channels_;
+    summary.inputs = m_channels;
     return summary;
 }
 
 Eigen::VectorXd RidgeHeatModel::predictRun(const RunData& run,
                                            const std::vector<PredictionPoint>& at) const {
-    return design(run, at) * coefficients_;
+    return design(run, at) * m_coefficients;
 }
 
 }  // namespace driftlab::models

@@ -46,11 +46,11 @@ private:
     /// [every rise, the heat (when chosen), 1] at the points.
     Eigen::MatrixXd design(const RunData& run, const std::vector<PredictionPoint>& at) const;
 
-    RisesHeatOptions options_;
-    QStringList channels_;
-    SpindleHeat heat_;
-    double lambda_ = 0;
-    Eigen::VectorXd coefficients_;
+    RisesHeatOptions m_options;
+    QStringList m_channels;
+    SpindleHeat m_heat;
+    double m_lambda = 0;
+    Eigen::VectorXd m_coefficients;
 };
 
 }  // namespace driftlab::models

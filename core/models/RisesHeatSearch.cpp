@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "core/models/CrossValidation.h"
-#include "core/models/DynamicRegressionSearch.h"
 #include "core/models/HeatSourceInputs.h"
+#include "core/models/LaggedSensorsSearch.h"
 #include "core/models/ModelError.h"
 #include "core/models/RunDataAccess.h"
 
@@ -70,23 +70,23 @@ RisesHeatSearch::RisesHeatSearch(const std::vector<RunData>& training, const QSt
             QStringLiteral("model '%1' needs a time-constant grid with 0 < min < max and a "
                            "step above 1")
                 .arg(model));
-    channels_ = arx::usableChannels(training, model, false, summary);
+    m_channels = arx::usableChannels(training, model, false, summary);
     std::vector<RunData> search;
     for (const RunData& run : training)
         search.push_back(thinnedRun(run, options.search_rows_per_run));
-    folds_ = crossValidationFolds(search, options.time_blocks);
-    observed_ = stackRows(search, &RunData::observedErrors);
-    rises_ = stackRows(search, [&](const RunData& run) {
-        return risesAt(run, channels_, run.observationPoints());
+    m_folds = crossValidationFolds(search, options.time_blocks);
+    m_observed = stackRows(search, &RunData::observedErrors);
+    m_rises = stackRows(search, [&](const RunData& run) {
+        return risesAt(run, m_channels, run.observationPoints());
     });
-    heats_.push_back({});
-    columns_.emplace_back(rises_.rows(), 0);
+    m_heats.push_back({});
+    m_columns.emplace_back(m_rises.rows(), 0);
 
     // The heat needs two training runs: the time blocks of one share its
     // speed programme and cannot test a heat law on motion the fit has not
     // seen (as for `arx-all`).
     if (training.size() < 2) {
-        heatNote_ = QStringLiteral(
+        m_heatNote = QStringLiteral(
             "no lagged heat input: one training run, whose time blocks share one speed "
             "programme");
         return;
@@ -99,7 +99,7 @@ RisesHeatSearch::RisesHeatSearch(const std::vector<RunData>& training, const QSt
                 inputs.back().push_back(spindleHeatInput(run, exponent, model));
         }
     } catch (const ModelError& e) {
-        heatNote_ = QStringLiteral("no lagged heat input: %1").arg(e.message);
+        m_heatNote = QStringLiteral("no lagged heat input: %1").arg(e.message);
         return;
     }
     double shortest_s = std::numeric_limits<double>::infinity();
@@ -112,15 +112,15 @@ RisesHeatSearch::RisesHeatSearch(const std::vector<RunData>& training, const QSt
     const double longest_s = std::min(options.max_tau_s, shortest_s * options.max_heat_tau_of_run);
     for (std::size_t e = 0; e < inputs.size(); ++e)
         for (double tau = options.min_tau_s; tau <= longest_s * 1.0001; tau *= options.tau_step) {
-            Eigen::MatrixXd column(rises_.rows(), 1);
+            Eigen::MatrixXd column(m_rises.rows(), 1);
             Eigen::Index at = 0;
             for (std::size_t r = 0; r < search.size(); ++r) {
                 const Eigen::VectorXd part = lagResponse(inputs[e][r], tau, times[r]);
                 column.col(0).segment(at, part.size()) = part;
                 at += part.size();
             }
-            heats_.push_back({int(e) + 1, tau});
-            columns_.push_back(std::move(column));
+            m_heats.push_back({int(e) + 1, tau});
+            m_columns.push_back(std::move(column));
         }
 }
 

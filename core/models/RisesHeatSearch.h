@@ -68,26 +68,26 @@ public:
     RisesHeatSearch(const std::vector<RunData>& training, const QString& model,
                     const RisesHeatOptions& options, FitSummary& summary);
 
-    const QStringList& channels() const { return channels_; }
+    const QStringList& channels() const { return m_channels; }
     /// The search rows' rises (rows × channels), errors and folds.
-    const Eigen::MatrixXd& rises() const { return rises_; }
-    const Eigen::VectorXd& observed() const { return observed_; }
-    const std::vector<int>& folds() const { return folds_; }
+    const Eigen::MatrixXd& rises() const { return m_rises; }
+    const Eigen::VectorXd& observed() const { return m_observed; }
+    const std::vector<int>& folds() const { return m_folds; }
     /// No heat first, then each (p, τ) the training runs allow.
-    const std::vector<SpindleHeat>& heats() const { return heats_; }
+    const std::vector<SpindleHeat>& heats() const { return m_heats; }
     /// The candidate's column over the search rows (no column for no heat).
-    const Eigen::MatrixXd& heatColumn(std::size_t candidate) const { return columns_[candidate]; }
+    const Eigen::MatrixXd& heatColumn(std::size_t candidate) const { return m_columns[candidate]; }
     /// Why no heat is tried (one run, no speed channel), or empty.
-    const QString& heatNote() const { return heatNote_; }
+    const QString& heatNote() const { return m_heatNote; }
 
 private:
-    QStringList channels_;
-    Eigen::MatrixXd rises_;
-    Eigen::VectorXd observed_;
-    std::vector<int> folds_;
-    std::vector<SpindleHeat> heats_;
-    std::vector<Eigen::MatrixXd> columns_;
-    QString heatNote_;
+    QStringList m_channels;
+    Eigen::MatrixXd m_rises;
+    Eigen::VectorXd m_observed;
+    std::vector<int> m_folds;
+    std::vector<SpindleHeat> m_heats;
+    std::vector<Eigen::MatrixXd> m_columns;
+    QString m_heatNote;
 };
 
 /// Puts `c` and, for a heat, its gain and τ into the summary from the fitted

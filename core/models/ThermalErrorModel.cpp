@@ -15,7 +15,7 @@ QString targetName(const QString& targetChannel) {
 }  // namespace
 
 FitSummary ThermalErrorModel::fit(const std::vector<RunData>& training) {
-    fitted_ = false;
+    m_fitted = false;
     try {
         if (training.empty())
             throw ModelError(
@@ -32,8 +32,8 @@ FitSummary ThermalErrorModel::fit(const std::vector<RunData>& training) {
         // the latest, so a cancelled fit never counts as a result.
         if (cancelRequested())
             throw ModelError(QStringLiteral("model '%1': fit cancelled").arg(name()));
-        target_channel_ = training.front().target_channel;
-        fitted_ = true;
+        m_target_channel = training.front().target_channel;
+        m_fitted = true;
         double squares = 0;
         for (const RunData& run : training) {
             squares += (run.observedErrors() - checkedPrediction(run, run.observationPoints()))
@@ -49,7 +49,7 @@ FitSummary ThermalErrorModel::fit(const std::vector<RunData>& training) {
                                   .arg(summary.observations);
         return summary;
     } catch (const ModelError& e) {
-        fitted_ = false;
+        m_fitted = false;
         FitSummary failed;
         failed.message = e.message;
         return failed;
@@ -64,10 +64,10 @@ Prediction ThermalErrorModel::predict(const RunData& run,
                                       const std::vector<PredictionPoint>& at) const {
     Prediction prediction;
     try {
-        if (!fitted_) throw ModelError(QStringLiteral("model '%1' is not fitted").arg(name()));
-        if (run.target_channel != target_channel_)
+        if (!m_fitted) throw ModelError(QStringLiteral("model '%1' is not fitted").arg(name()));
+        if (run.target_channel != m_target_channel)
             throw ModelError(QStringLiteral("model '%1' was fitted to %2; run '%3' asks for %4")
-                                 .arg(name(), targetName(target_channel_), run.run_id,
+                                 .arg(name(), targetName(m_target_channel), run.run_id,
                                       targetName(run.target_channel)));
         const Eigen::VectorXd e = checkedPrediction(run, at);
         prediction.error_um.assign(e.data(), e.data() + e.size());

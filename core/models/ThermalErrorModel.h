@@ -53,12 +53,12 @@ public:
 
     /// Fits on the training runs, all from one buildDataset call (same target).
     FitSummary fit(const std::vector<RunData>& training);
-    bool isFitted() const { return fitted_; }
+    bool isFitted() const { return m_fitted; }
     /// Asked during a long fit (between solver iterations and search steps):
     /// true stops it, and fit() then fails with "… fit cancelled". The GUI's
     /// Cancel sets an atomic flag this reads; it is called on the fitting thread.
-    void setCancelCheck(std::function<bool()> cancelled) { cancelled_ = std::move(cancelled); }
-    bool cancelRequested() const { return cancelled_ && cancelled_(); }
+    void setCancelCheck(std::function<bool()> cancelled) { m_cancelled = std::move(cancelled); }
+    bool cancelRequested() const { return m_cancelled && m_cancelled(); }
 
     /// The thermal error at the run's observation points.
     Prediction predict(const RunData& run) const;
@@ -76,8 +76,8 @@ protected:
     /// For a model whose values were found outside fit() (the diagnosis's
     /// fits of an effect on the readings): it predicts `targetChannel` from now on.
     void markFitted(const QString& targetChannel) {
-        fitted_ = true;
-        target_channel_ = targetChannel;
+        m_fitted = true;
+        m_target_channel = targetChannel;
     }
 
 private:
@@ -85,9 +85,9 @@ private:
     Eigen::VectorXd checkedPrediction(const RunData& run,
                                       const std::vector<PredictionPoint>& at) const;
 
-    bool fitted_ = false;
-    QString target_channel_;
-    std::function<bool()> cancelled_;
+    bool m_fitted = false;
+    QString m_target_channel;
+    std::function<bool()> m_cancelled;
 };
 
 }  // namespace driftlab::models

@@ -47,20 +47,20 @@ void motionPieces(std::span<const MotionSegment> motion, std::size_t& cursor,
 
 NutPath::NutPath(const ScrewThermalParameters& screw, std::span<const MotionSegment> motion,
                  double dt_s, std::size_t steps)
-    : screw_(screw), dt_s_(dt_s), segments_(motion.size()) {
+    : m_screw(screw), m_dt_s(dt_s), m_segments(motion.size()) {
     const auto cells = static_cast<std::size_t>(screw.cells);
     std::vector<double> spread(cells, 0.0);
     std::vector<MotionPiece> inStep;
     std::size_t cursor = 0;
-    stepStart_.reserve(steps + 1);
+    m_stepStart.reserve(steps + 1);
     // Step times summed as the simulation sums them, so the cut is the same.
     double t0 = 0;
     for (std::size_t k = 0; k < steps; ++k) {
         const double t1 = t0 + dt_s;
-        stepStart_.push_back(pieces_.size());
+        m_stepStart.push_back(m_pieces.size());
         motionPieces(motion, cursor, screw, t0, t1, inStep);
         for (const MotionPiece& m : inStep) {
-            Piece piece{m.omega_rad_s, m.duration_s, 0, 0, weights_.size(), 0};
+            Piece piece{m.omega_rad_s, m.duration_s, 0, 0, m_weights.size(), 0};
             piece.total_J_per_W = depositNutHeat(spread, screw.cellWidth_m(), screw.nut_length_m,
                                                  m.from_m, m.to_m, m.duration_s, 1.0);
             const auto heated = [](double w) { return w != 0; };
@@ -69,22 +69,22 @@ NutPath::NutPath(const ScrewThermalParameters& screw, std::span<const MotionSegm
             if (first < last) {
                 piece.first_cell = std::size_t(first - spread.begin());
                 piece.cells = std::size_t(last - first);
-                weights_.insert(weights_.end(), first, last);
+                m_weights.insert(m_weights.end(), first, last);
                 std::fill(first, last, 0.0);
             }
-            pieces_.push_back(piece);
+            m_pieces.push_back(piece);
         }
         t0 = t1;
     }
-    stepStart_.push_back(pieces_.size());
+    m_stepStart.push_back(m_pieces.size());
 }
 
 bool NutPath::fits(const ScrewThermalParameters& screw, double dt_s, std::size_t segments,
                    std::size_t steps) const {
-    return screw.cells == screw_.cells && screw.length_m == screw_.length_m &&
-           screw.lead_m == screw_.lead_m && screw.nut_length_m == screw_.nut_length_m &&
-           screw.fixed_end_axis_mm == screw_.fixed_end_axis_mm && dt_s == dt_s_ &&
-           segments == segments_ && steps == this->steps();
+    return screw.cells == m_screw.cells && screw.length_m == m_screw.length_m &&
+           screw.lead_m == m_screw.lead_m && screw.nut_length_m == m_screw.nut_length_m &&
+           screw.fixed_end_axis_mm == m_screw.fixed_end_axis_mm && dt_s == m_dt_s &&
+           segments == m_segments && steps == this->steps();
 }
 
 }  // namespace driftlab::physics

@@ -54,21 +54,21 @@ public:
     bool fits(const ScrewThermalParameters& screw, double dt_s, std::size_t segments,
               std::size_t steps) const;
 
-    std::size_t steps() const { return stepStart_.size() - 1; }
+    std::size_t steps() const { return m_stepStart.size() - 1; }
     /// The pieces of step k, from k·dt to (k + 1)·dt.
     std::span<const Piece> step(std::size_t k) const {
-        return {pieces_.data() + stepStart_[k], stepStart_[k + 1] - stepStart_[k]};
+        return {m_pieces.data() + m_stepStart[k], m_stepStart[k + 1] - m_stepStart[k]};
     }
     /// Joules per watt of nut power for each cell of `piece`, from its first.
-    const double* weights(const Piece& piece) const { return weights_.data() + piece.offset; }
+    const double* weights(const Piece& piece) const { return m_weights.data() + piece.offset; }
 
 private:
-    ScrewThermalParameters screw_;
-    double dt_s_;
-    std::size_t segments_;
-    std::vector<Piece> pieces_;
-    std::vector<std::size_t> stepStart_;  ///< pieces_ index of each step's first, and the end
-    std::vector<double> weights_;
+    ScrewThermalParameters m_screw;
+    double m_dt_s;
+    std::size_t m_segments;
+    std::vector<Piece> m_pieces;
+    std::vector<std::size_t> m_stepStart;  ///< m_pieces index of each step's first, and the end
+    std::vector<double> m_weights;
 };
 
 }  // namespace driftlab::physics

@@ -56,11 +56,11 @@ public:
     /// screw (nut centre beyond either end).
     void step(const StepConditions& conditions);
 
-    double time_s() const { return time_s_; }
-    const ScrewThermalParameters& parameters() const { return parameters_; }
+    double time_s() const { return m_time_s; }
+    const ScrewThermalParameters& parameters() const { return m_parameters; }
     /// Cell temperatures, cell i centred at (i + ½)·Δx from the fixed end.
-    const std::vector<double>& temperatures_C() const { return temperature_; }
-    double cellCentre_m(int cell) const { return (cell + 0.5) * dx_; }
+    const std::vector<double>& temperatures_C() const { return m_temperature; }
+    double cellCentre_m(int cell) const { return (cell + 0.5) * m_dx; }
 
     /// Temperature at a screw coordinate, linear between cell centres.
     double temperatureAt_C(double x_m) const;
@@ -78,11 +78,11 @@ public:
     void resetReference();
 
     double screwCoordinate_m(double axis_mm) const {
-        return (axis_mm - parameters_.fixed_end_axis_mm) * 1e-3;
+        return (axis_mm - m_parameters.fixed_end_axis_mm) * 1e-3;
     }
     /// Heat stored since construction, J (the ledger's "stored").
     double storedEnergy_J() const;
-    const EnergyLedger& energy() const { return ledger_; }
+    const EnergyLedger& energy() const { return m_ledger; }
 
 private:
     void refactorise(double dt_s, double h_W_m2K);
@@ -94,28 +94,28 @@ private:
     double cumulativeExpansion_m(double x_m, const std::vector<double>& prefix) const;
     std::vector<double> expansionPrefix() const;
 
-    ScrewThermalParameters parameters_;
+    ScrewThermalParameters m_parameters;
     int n_;
-    double dx_;
-    double capacity_J_K_;        ///< per cell
-    double conductance_W_K_;     ///< between neighbouring cells
-    double endConductance_W_K_;  ///< cell centre to a fixed-temperature end face
-    double surface_m2_;          ///< per cell
-    double time_s_ = 0;
-    std::size_t motionCursor_ = 0;
-    std::vector<MotionPiece> pieces_;  ///< of the current step, without a NutPath
+    double m_dx;
+    double m_capacity_J_K;        ///< per cell
+    double m_conductance_W_K;     ///< between neighbouring cells
+    double m_endConductance_W_K;  ///< cell centre to a fixed-temperature end face
+    double m_surface_m2;          ///< per cell
+    double m_time_s = 0;
+    std::size_t m_motionCursor = 0;
+    std::vector<MotionPiece> m_pieces;  ///< of the current step, without a NutPath
 
-    std::vector<double> temperature_;
-    std::vector<double> reference_;  ///< for the thermal error
-    std::vector<double> initial_;    ///< for the energy ledger
-    std::vector<double> source_J_;   ///< heat deposited in the current step, per cell
-    std::vector<double> rhs_;
-    double temperatureSum_ = 0;  ///< Σ T of the current field, for the ledger
+    std::vector<double> m_temperature;
+    std::vector<double> m_reference;  ///< for the thermal error
+    std::vector<double> m_initial;    ///< for the energy ledger
+    std::vector<double> m_source_J;   ///< heat deposited in the current step, per cell
+    std::vector<double> m_rhs;
+    double m_temperatureSum = 0;  ///< Σ T of the current field, for the ledger
 
-    TridiagonalSolver solver_;
-    double factorisedDt_ = -1;
-    double factorisedH_ = -1;
-    EnergyLedger ledger_;
+    TridiagonalSolver m_solver;
+    double m_factorisedDt = -1;
+    double m_factorisedH = -1;
+    EnergyLedger m_ledger;
 };
 
 }  // namespace driftlab::physics

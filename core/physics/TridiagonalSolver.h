@@ -26,54 +26,55 @@ public:
     void factorise(const std::vector<double>& lower, const std::vector<double>& diag,
                    const std::vector<double>& upper) {
         const std::size_t n = diag.size();
-        middle_ = n / 2;
-        scale_.assign(n, 0.0);
-        couple_.assign(n, 0.0);
-        back_.assign(n, 0.0);
+        m_middle = n / 2;
+        m_scale.assign(n, 0.0);
+        m_couple.assign(n, 0.0);
+        m_back.assign(n, 0.0);
         // Top half, downwards: x_i + back_i·x_{i+1} = y_i with
         // y_i = scale_i·r_i − couple_i·y_{i−1}.
         double previousBack = 0;
-        for (std::size_t i = 0; i < middle_; ++i) {
+        for (std::size_t i = 0; i < m_middle; ++i) {
             const double l = i > 0 ? lower[i] : 0.0;
             const double inverse = 1.0 / (diag[i] - l * previousBack);
-            scale_[i] = inverse;
-            couple_[i] = l * inverse;
-            back_[i] = upper[i] * inverse;
-            previousBack = back_[i];
+            m_scale[i] = inverse;
+            m_couple[i] = l * inverse;
+            m_back[i] = upper[i] * inverse;
+            previousBack = m_back[i];
         }
         // Bottom half, upwards: x_i + back_i·x_{i−1} = y_i with
         // y_i = scale_i·r_i − couple_i·y_{i+1}.
         previousBack = 0;
-        for (std::size_t i = n - 1; i > middle_; --i) {
+        for (std::size_t i = n - 1; i > m_middle; --i) {
             const double u = i + 1 < n ? upper[i] : 0.0;
             const double inverse = 1.0 / (diag[i] - u * previousBack);
-            scale_[i] = inverse;
-            couple_[i] = u * inverse;
-            back_[i] = lower[i] * inverse;
-            previousBack = back_[i];
+            m_scale[i] = inverse;
+            m_couple[i] = u * inverse;
+            m_back[i] = lower[i] * inverse;
+            previousBack = m_back[i];
         }
         // The middle row meets both halves.
-        lowerMiddle_ = lower[middle_];
-        upperMiddle_ = upper[middle_];
-        scale_[middle_] = 1.0 / (diag[middle_] - lowerMiddle_ * back_[middle_ - 1] -
-                                 upperMiddle_ * back_[middle_ + 1]);
+        m_lowerMiddle = lower[m_middle];
+        m_upperMiddle = upper[m_middle];
+        m_scale[m_middle] = 1.0 / (diag[m_middle] - m_lowerMiddle * m_back[m_middle - 1] -
+                                   m_upperMiddle * m_back[m_middle + 1]);
         // Coefficients of two steps in one: y_k = … + couple2_k·y_{k∓2}, x_k = … + back2_k·x_{k±2}.
-        couple2_.assign(n, 0.0);
-        back2_.assign(n, 0.0);
-        for (std::size_t k = 1; k < middle_; ++k) couple2_[k] = couple_[k] * couple_[k - 1];
-        for (std::size_t k = middle_ + 1; k + 1 < n; ++k) couple2_[k] = couple_[k] * couple_[k + 1];
-        for (std::size_t k = 0; k + 1 < middle_; ++k) back2_[k] = back_[k] * back_[k + 1];
-        for (std::size_t k = middle_ + 2; k < n; ++k) back2_[k] = back_[k] * back_[k - 1];
+        m_couple2.assign(n, 0.0);
+        m_back2.assign(n, 0.0);
+        for (std::size_t k = 1; k < m_middle; ++k) m_couple2[k] = m_couple[k] * m_couple[k - 1];
+        for (std::size_t k = m_middle + 1; k + 1 < n; ++k)
+            m_couple2[k] = m_couple[k] * m_couple[k + 1];
+        for (std::size_t k = 0; k + 1 < m_middle; ++k) m_back2[k] = m_back[k] * m_back[k + 1];
+        for (std::size_t k = m_middle + 2; k < n; ++k) m_back2[k] = m_back[k] * m_back[k - 1];
     }
 
     /// Solves in place: `r` (the right-hand side) becomes the solution.
     void solve(double* r) const {
-        const std::size_t n = scale_.size(), m = middle_;
-        const double* s = scale_.data();
-        const double* c = couple_.data();
-        const double* c2 = couple2_.data();
-        const double* b = back_.data();
-        const double* b2 = back2_.data();
+        const std::size_t n = m_scale.size(), m = m_middle;
+        const double* s = m_scale.data();
+        const double* c = m_couple.data();
+        const double* c2 = m_couple2.data();
+        const double* b = m_back.data();
+        const double* b2 = m_back2.data();
         // Eliminate from both ends towards the middle, two cells per chain step.
         r[0] *= s[0];
         r[n - 1] *= s[n - 1];
@@ -88,7 +89,7 @@ public:
         }
         for (; i < m; ++i) r[i] = s[i] * r[i] - c[i] * r[i - 1];
         for (; j > m; --j) r[j] = s[j] * r[j] - c[j] * r[j + 1];
-        r[m] = (r[m] - lowerMiddle_ * r[m - 1] - upperMiddle_ * r[m + 1]) * s[m];
+        r[m] = (r[m] - m_lowerMiddle * r[m - 1] - m_upperMiddle * r[m + 1]) * s[m];
         // Substitute back outwards from the middle, again two cells per step.
         std::size_t up = m, down = m;
         for (; up >= 2 && down + 2 < n; up -= 2, down += 2) {
@@ -103,15 +104,15 @@ public:
         for (; down + 1 < n; ++down) r[down + 1] -= b[down + 1] * r[down];
     }
 
-    std::size_t size() const { return scale_.size(); }
+    std::size_t size() const { return m_scale.size(); }
 
 private:
-    std::size_t middle_ = 0;
-    double lowerMiddle_ = 0, upperMiddle_ = 0;
-    std::vector<double> scale_;   ///< 1 / pivot
-    std::vector<double> couple_;  ///< neighbour coupling / pivot
-    std::vector<double> back_;    ///< back-substitution coefficient
-    std::vector<double> couple2_, back2_;
+    std::size_t m_middle = 0;
+    double m_lowerMiddle = 0, m_upperMiddle = 0;
+    std::vector<double> m_scale;   ///< 1 / pivot
+    std::vector<double> m_couple;  ///< neighbour coupling / pivot
+    std::vector<double> m_back;    ///< back-substitution coefficient
+    std::vector<double> m_couple2, m_back2;
 };
 
 }  // namespace driftlab::physics

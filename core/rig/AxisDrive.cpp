@@ -9,18 +9,18 @@ double AxisDrive::speed_rad_s(const MotionSegment& s) const {
     const double span = s.end_s - s.start_s;
     if (span <= 0 || s.isDwell()) return 0;
     const double v_mm_s = (s.to_mm - s.from_mm) / span;
-    return 2 * M_PI * v_mm_s / lead_mm_;
+    return 2 * M_PI * v_mm_s / m_lead_mm;
 }
 
 double AxisDrive::steadyTorque_Nm(double omega) const {
     if (omega == 0) return 0;
-    return std::copysign(spec_.coulomb_Nm, omega) + spec_.viscous_Nm_per_rad_s * omega;
+    return std::copysign(m_spec.coulomb_Nm, omega) + m_spec.viscous_Nm_per_rad_s * omega;
 }
 
 std::size_t AxisDrive::segmentAt(std::span<const MotionSegment> motion, double time_s) {
-    if (cursor_ >= motion.size() || motion[cursor_].start_s > time_s) cursor_ = 0;
-    while (cursor_ + 1 < motion.size() && motion[cursor_].end_s <= time_s) ++cursor_;
-    return cursor_;
+    if (m_cursor >= motion.size() || motion[m_cursor].start_s > time_s) m_cursor = 0;
+    while (m_cursor + 1 < motion.size() && motion[m_cursor].end_s <= time_s) ++m_cursor;
+    return m_cursor;
 }
 
 double AxisDrive::torqueSquaredIntegral(std::span<const MotionSegment> motion, double t0,
@@ -36,8 +36,8 @@ double AxisDrive::torqueSquaredIntegral(std::span<const MotionSegment> motion, d
         if (motion[k].start_s >= t0) {
             const double before = k > 0 ? speed_rad_s(motion[k - 1]) : 0.0;
             const double inertia =
-                spec_.inertia_kg_m2 * (omega - before) / spec_.acceleration_time_s;
-            integral += inertia * inertia * spec_.acceleration_time_s;
+                m_spec.inertia_kg_m2 * (omega - before) / m_spec.acceleration_time_s;
+            integral += inertia * inertia * m_spec.acceleration_time_s;
         }
     }
     return integral;
@@ -45,7 +45,7 @@ double AxisDrive::torqueSquaredIntegral(std::span<const MotionSegment> motion, d
 
 double AxisDrive::loggedTorque_Nm(double torqueSquaredIntegral_N2m2s, double interval_s) {
     const double rms = interval_s > 0 ? std::sqrt(torqueSquaredIntegral_N2m2s / interval_s) : 0.0;
-    return std::max(0.0, rms + noise_(rng_) * spec_.torque_noise_Nm);
+    return std::max(0.0, rms + m_noise(m_rng) * m_spec.torque_noise_Nm);
 }
 
 }  // namespace driftlab::rig

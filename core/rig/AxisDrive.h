@@ -14,7 +14,7 @@ namespace driftlab::rig {
 class AxisDrive {
 public:
     AxisDrive(const AxisDriveSpec& spec, double lead_mm, unsigned seed)
-        : spec_(spec), lead_mm_(lead_mm), rng_(seed) {}
+        : m_spec(spec), m_lead_mm(lead_mm), m_rng(seed) {}
 
     /// ∫ torque² dt over [t0, t1], N²·m²·s.
     double torqueSquaredIntegral(std::span<const MotionSegment> motion, double t0, double t1);
@@ -27,11 +27,11 @@ private:
     double steadyTorque_Nm(double omega) const;
     std::size_t segmentAt(std::span<const MotionSegment> motion, double time_s);
 
-    AxisDriveSpec spec_;
-    double lead_mm_;
-    std::mt19937_64 rng_;
-    std::normal_distribution<double> noise_{0.0, 1.0};
-    std::size_t cursor_ = 0;
+    AxisDriveSpec m_spec;
+    double m_lead_mm;
+    std::mt19937_64 m_rng;
+    std::normal_distribution<double> m_noise{0.0, 1.0};
+    std::size_t m_cursor = 0;
 };
 
 }  // namespace driftlab::rig

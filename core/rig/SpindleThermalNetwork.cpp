@@ -73,19 +73,19 @@ Eigen::Matrix<double, kSpindleNodes, 3> SpindleThermalNetwork::inputMatrix() {
 }
 
 SpindleThermalNetwork::SpindleThermalNetwork(double room_C, double step_s) {
-    temperature_C_.setConstant(room_C);
+    m_temperature_C.setConstant(room_C);
     const auto A = systemMatrix();
     const Eigen::Matrix<double, kSpindleNodes, kSpindleNodes> Adt = A * step_s;
-    transition_ = Adt.exp();
+    m_transition = Adt.exp();
     // A is invertible: every node loses heat to the room, directly or through others.
-    inputGain_ =
-        A.partialPivLu().solve(transition_ - decltype(transition_)::Identity()) * inputMatrix();
+    m_inputGain =
+        A.partialPivLu().solve(m_transition - decltype(m_transition)::Identity()) * inputMatrix();
 }
 
 void SpindleThermalNetwork::step(double speed_rpm, double room_C) {
     const auto heat = heatTerms_K(speed_rpm);
     const Eigen::Vector3d u(room_C, heat[0], heat[1]);
-    temperature_C_ = transition_ * temperature_C_ + inputGain_ * u;
+    m_temperature_C = m_transition * m_temperature_C + m_inputGain * u;
 }
 
 }  // namespace driftlab::rig

@@ -34,7 +34,7 @@ public:
 
     /// Advances one interval with the speed and the room temperature held.
     void step(double speed_rpm, double room_C);
-    double temperature_C(SpindleNode node) const { return temperature_C_[int(node)]; }
+    double temperature_C(SpindleNode node) const { return m_temperature_C[int(node)]; }
 
     /// The node's time constant and the steady rise of the heated nodes, for
     /// the tests that check the stepping against closed forms.
@@ -46,9 +46,9 @@ public:
     static Eigen::Matrix<double, kSpindleNodes, 3> inputMatrix();
 
 private:
-    Eigen::Matrix<double, kSpindleNodes, 1> temperature_C_;
-    Eigen::Matrix<double, kSpindleNodes, kSpindleNodes> transition_;  ///< exp(A·Δt)
-    Eigen::Matrix<double, kSpindleNodes, 3> inputGain_;  ///< A⁻¹·(exp(A·Δt) − I)·B
+    Eigen::Matrix<double, kSpindleNodes, 1> m_temperature_C;
+    Eigen::Matrix<double, kSpindleNodes, kSpindleNodes> m_transition;  ///< exp(A·Δt)
+    Eigen::Matrix<double, kSpindleNodes, 3> m_inputGain;  ///< A⁻¹·(exp(A·Δt) − I)·B
 };
 
 }  // namespace driftlab::rig

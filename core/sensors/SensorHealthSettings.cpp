@@ -91,7 +91,7 @@ bool outOfRange(const SensorHealthSettings& settings, Quantity quantity, double 
     if (!std::isfinite(value)) return true;
     // What the bundle reader calls impossible is never a plausible reading;
     // the settings narrow that to the lab.
-    if (impossibleValue(quantity, value)) return true;
+    if (bundle::impossibleValue(quantity, value)) return true;
     switch (quantity) {
         case Quantity::Temperature:
             return value < settings.temperature_min_C || value > settings.temperature_max_C;

@@ -9,7 +9,7 @@
 #include "acquisition/devices/ControllerLink.h"
 #include "acquisition/sim/SimulatedController.h"
 #include "tests/acquisition/DevicePeer.h"
-#include "tests/acquisition/DeviceSignals.h"
+#include "tests/support/SignalWait.h"
 
 using namespace driftlab;
 using namespace driftlab::devices;
@@ -52,7 +52,7 @@ TEST(AxisStateRegisters, roundsHalvesAwayFromZeroAndSaturates) {
 }
 
 TEST(ControllerLinkSim, axisStateSetOnTheSimulatedControllerIsReadBack) {
-    push::SimulatedController controller;
+    sim::SimulatedController controller;
     QString error;
     ASSERT_TRUE(controller.start(&error)) << qPrintable(error);
     controller.setAxisState({-123.4567, -8000.5, 12.34});
@@ -129,7 +129,6 @@ TEST(ControllerLinkPeer, axisStateOfTheIndependentControllerIsReadWithScaleAndSi
 TEST(ControllerDevice, peerKilledMidRun_oneErrorAGapAndReconnect) {
     if (const QString why = test::peerUnavailable(); !why.isEmpty())
         GTEST_SKIP() << qPrintable(why);
-    test::ensureCoreApplication();
     const QStringList axis{QStringLiteral("--position-mm=250.5"),
                            QStringLiteral("--feed-mm-min=6000"), QStringLiteral("--torque-nm=3.2"),
                            QStringLiteral("--state=moving")};

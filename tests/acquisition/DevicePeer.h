@@ -5,7 +5,6 @@
 // parallel; and the pty bridge the RTU tests put between a peer and DriftLab.
 #include <gtest/gtest.h>
 
-#include <QCoreApplication>
 #include <QFile>
 #include <QProcess>
 #include <memory>
@@ -109,16 +108,6 @@ inline std::unique_ptr<QProcess> startRtuTemperaturePeer(const QString& device) 
 inline void killPeer(QProcess& peer) {
     peer.kill();
     peer.waitForFinished();
-}
-
-/// Queued signals need an event loop on the test's thread; gtest_main makes none.
-inline void ensureCoreApplication() {
-    if (QCoreApplication::instance()) return;
-    static int argc = 1;
-    static char name[] = "acquisition_device_tests";
-    static char* argv[] = {name, nullptr};
-    // Never deleted: it must outlive every test and static.
-    new QCoreApplication(argc, argv);
 }
 
 }  // namespace driftlab::test

@@ -12,7 +12,7 @@
 
 #include "acquisition/devices/TemperatureDevice.h"
 #include "tests/acquisition/DevicePeer.h"
-#include "tests/acquisition/DeviceSignals.h"
+#include "tests/support/SignalWait.h"
 
 using namespace driftlab;
 using namespace driftlab::devices;
@@ -53,7 +53,6 @@ void expectProfileValues(const TemperatureReading& r) {
 TEST(DeviceWorker, peerKilledMidRun_oneErrorReconnectOnNewPeerAndGapCoversOutage) {
     if (const QString why = test::peerUnavailable(); !why.isEmpty())
         GTEST_SKIP() << qPrintable(why);
-    test::ensureCoreApplication();
     int port = 0;
     auto peer = test::startTemperaturePeer(0, &port);
     ASSERT_GT(port, 0);
@@ -115,7 +114,6 @@ TEST(DeviceWorker, peerKilledMidRun_oneErrorReconnectOnNewPeerAndGapCoversOutage
 }
 
 TEST(DeviceWorker, nothingListening_oneErrorThenFailedAfterMaxAttempts) {
-    test::ensureCoreApplication();
     DeviceWorkerOptions options = quickOptions();
     options.max_attempts = 5;
     options.backoff_max_s = 0.2;
@@ -128,7 +126,7 @@ TEST(DeviceWorker, nothingListening_oneErrorThenFailedAfterMaxAttempts) {
     device.start();
     // Failed is the last state the worker reaches on its own.
     while (health.isEmpty() || health.last().at(0).value<DeviceHealth>() != DeviceHealth::Failed)
-        ASSERT_TRUE(health.wait(test::kEventWaitMs));
+        ASSERT_TRUE(health.wait(test::kSignalWaitMs));
     EXPECT_EQ(errors.count(), 1);
     EXPECT_TRUE(errors.at(0).at(0).toString().contains(QStringLiteral("cannot connect")));
     ASSERT_EQ(attempts.count(), 5);
@@ -143,7 +141,6 @@ TEST(DeviceWorker, nothingListening_oneErrorThenFailedAfterMaxAttempts) {
 }
 
 TEST(DeviceWorker, destroyedWhileRetrying_stopsWithinTheBound) {
-    test::ensureCoreApplication();
     DeviceWorkerOptions options = quickOptions();
     options.backoff_initial_s = 5;  // the worker sits in a long backoff timer
     TemperatureDevice device(test::temperatureProfile(),
@@ -156,7 +153,7 @@ TEST(DeviceWorker, destroyedWhileRetrying_stopsWithinTheBound) {
     EXPECT_FALSE(device.isRunning());
     // The worker's last word, delivered through the queue.
     QSignalSpy health(&device, &TemperatureDevice::healthChanged);
-    ASSERT_TRUE(health.wait(test::kEventWaitMs));
+    ASSERT_TRUE(health.wait(test::kSignalWaitMs));
     EXPECT_EQ(health.last().at(0).value<DeviceHealth>(), DeviceHealth::Stopped);
     device.start();  // a stopped device stays stopped (its worker is gone)
     EXPECT_FALSE(device.isRunning());

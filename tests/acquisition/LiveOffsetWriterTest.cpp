@@ -14,7 +14,7 @@
 namespace driftlab::test {
 namespace {
 
-std::int32_t liveOffsetNm(const push::SimulatedController& c) {
+std::int32_t liveOffsetNm(const sim::SimulatedController& c) {
     const std::uint16_t words[2] = {c.registerValue(2001), c.registerValue(2002)};
     return push::getInt32(words);
 }

@@ -16,7 +16,7 @@
 #include "acquisition/modbus/Crc16Modbus.h"
 #include "acquisition/modbus/ModbusLink.h"
 #include "tests/acquisition/DevicePeer.h"
-#include "tests/acquisition/DeviceSignals.h"
+#include "tests/support/SignalWait.h"
 
 using namespace driftlab;
 using namespace driftlab::devices;
@@ -156,7 +156,6 @@ TEST(ModbusRtuLink, anAnswerWithABadCrcIsAClearErrorAndClosesTheLink) {
 TEST(ModbusRtuDevice, peerStoppedMidRun_oneTimeoutErrorAGapAndReconnect) {
     if (const QString why = test::peerUnavailable(); !why.isEmpty())
         GTEST_SKIP() << qPrintable(why);
-    test::ensureCoreApplication();
     test::PtyBridge bridge = test::startPtyBridge();
     auto peer = test::startRtuTemperaturePeer(bridge.peers);
     DeviceWorkerOptions options;

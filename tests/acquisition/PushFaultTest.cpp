@@ -14,7 +14,7 @@ const auto kNext = pushTable(21, 35, 6, 0.7);
 
 /// A controller with table v1 applied; the faults come after it.
 struct ControllerWithTable {
-    std::unique_ptr<SimulatedController> controller = startController();
+    std::unique_ptr<sim::SimulatedController> controller = startController();
     compensation::CompensationTable first = pushTable(21);
 
     ControllerWithTable() {
@@ -22,7 +22,7 @@ struct ControllerWithTable {
         EXPECT_TRUE(result.ok()) << qPrintable(result.message);
     }
     /// Pushes the next table with `faults` injected from now on.
-    PushResult pushWith(const ControllerFaults& faults) const {
+    PushResult pushWith(const sim::ControllerFaults& faults) const {
         controller->setFaults(faults);
         return pushTable(urlOf(*controller), kNext, testOptions());
     }
@@ -39,7 +39,7 @@ class DroppedConnection : public testing::TestWithParam<int> {};
 
 TEST_P(DroppedConnection, reconnectsAbortsAndFindsThePreviousTableIntact) {
     ControllerWithTable setup;
-    ControllerFaults faults;
+    sim::ControllerFaults faults;
     faults.drop_after_writes = GetParam();
     const PushResult result = setup.pushWith(faults);
     EXPECT_EQ(result.outcome, PushOutcome::Failed);
@@ -66,7 +66,7 @@ INSTANTIATE_TEST_SUITE_P(EachWriteOfThePush, DroppedConnection, testing::Values(
 
 TEST(PushFault, refusedCommitAbortsAndKeepsThePreviousTable) {
     ControllerWithTable setup;
-    ControllerFaults faults;
+    sim::ControllerFaults faults;
     faults.refuse_commit = true;
     const PushResult result = setup.pushWith(faults);
     EXPECT_EQ(result.outcome, PushOutcome::Refused);
@@ -79,7 +79,7 @@ TEST(PushFault, refusedCommitAbortsAndKeepsThePreviousTable) {
 
 TEST(PushFault, corruptedActiveTableIsRolledBackToThePreviousOne) {
     ControllerWithTable setup;
-    ControllerFaults faults;
+    sim::ControllerFaults faults;
     faults.corrupt_after_apply = true;
     const PushResult result = setup.pushWith(faults);
     EXPECT_EQ(result.outcome, PushOutcome::RolledBack);
@@ -97,7 +97,7 @@ TEST(PushFault, corruptedActiveTableIsRolledBackToThePreviousOne) {
 }
 
 TEST(PushFault, corruptionOfTheFirstTableEverRollsBackToNoTable) {
-    SimulatedControllerOptions options;
+    sim::SimulatedControllerOptions options;
     options.faults.corrupt_after_apply = true;
     auto controller = startController(options);
     const PushResult result = pushTable(urlOf(*controller), kNext, testOptions());

@@ -26,22 +26,22 @@ inline compensation::CompensationTable pushTable(int points, double spacing_mm =
     return table;
 }
 
-inline std::unique_ptr<push::SimulatedController> startController(
-    push::SimulatedControllerOptions options = {}) {
-    auto controller = std::make_unique<push::SimulatedController>(options);
+inline std::unique_ptr<sim::SimulatedController> startController(
+    sim::SimulatedControllerOptions options = {}) {
+    auto controller = std::make_unique<sim::SimulatedController>(options);
     QString error;
     EXPECT_TRUE(controller->start(&error)) << qPrintable(error);
     return controller;
 }
 
 /// A controller that takes `capacity` points per table.
-inline std::unique_ptr<push::SimulatedController> startControllerOfCapacity(int capacity) {
-    push::SimulatedControllerOptions options;
+inline std::unique_ptr<sim::SimulatedController> startControllerOfCapacity(int capacity) {
+    sim::SimulatedControllerOptions options;
     options.capacity = capacity;
     return startController(options);
 }
 
-inline modbus::ModbusUrl urlOf(const push::SimulatedController& controller) {
+inline modbus::ModbusUrl urlOf(const sim::SimulatedController& controller) {
     return {QStringLiteral("127.0.0.1"), controller.port(), 1};
 }
 
@@ -53,7 +53,7 @@ inline push::PushOptions testOptions(double ack_timeout_s = 5) {
 }
 
 /// The active table (block 2) read over Modbus TCP by a client of its own.
-inline push::TableImage readActiveOverModbus(const push::SimulatedController& controller,
+inline push::TableImage readActiveOverModbus(const sim::SimulatedController& controller,
                                              int capacity = push::kMaxCapacity) {
     modbus::ModbusLink link(urlOf(controller));
     QString error;

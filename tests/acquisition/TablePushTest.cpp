@@ -69,7 +69,7 @@ TEST(TablePush, bidirectionalTableIsAppliedWithItsMinusColumn) {
 }
 
 TEST(TablePush, cuttingMachineDelaysTheTableUntilTheCutEnds) {
-    SimulatedControllerOptions options;
+    sim::SimulatedControllerOptions options;
     options.state = MachineState::Cutting;
     options.faults.idle_after_polls = 4;
     auto controller = startController(options);

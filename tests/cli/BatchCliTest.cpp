@@ -13,9 +13,9 @@
 #include <QTemporaryDir>
 #include <memory>
 
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BundleTestSupport.h"
 #include "tests/db/StoreTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab::test;
 
@@ -65,16 +65,6 @@ QJsonObject withoutTiming(QJsonObject fit) {
     inner.remove(QStringLiteral("message"));
     fit[QStringLiteral("fit")] = inner;
     return fit;
-}
-
-/// Runs a real tool in `workDir`; fails the test if it fails.
-void runTool(const QString& program, const QStringList& args, const QString& workDir) {
-    QProcess p;
-    p.setWorkingDirectory(workDir);
-    p.start(program, args);
-    ASSERT_TRUE(p.waitForFinished(60'000)) << qPrintable(program);
-    ASSERT_EQ(p.exitCode(), 0) << qPrintable(program) << ": "
-                               << p.readAllStandardError().constData();
 }
 
 void simulate(const QString& out, const QString& runs, int seed) {

@@ -2,7 +2,7 @@
 // its help, and that the product's executable no longer carries it.
 #include <gtest/gtest.h>
 
-#include "tests/cli/CliRunner.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab::test;
 

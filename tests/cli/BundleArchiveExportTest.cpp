@@ -11,9 +11,9 @@
 #include <QTemporaryDir>
 
 #include "core/bundle/BundleReader.h"
-#include "tests/cli/CliRunner.h"
 #include "tests/cli/RealWorldBundleSupport.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;

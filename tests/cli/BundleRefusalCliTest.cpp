@@ -20,9 +20,9 @@
 
 #include "core/bundle/BundleWriter.h"
 #include "db/CampaignStore.h"
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BundleTestSupport.h"
 #include "tests/db/StoreTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -145,7 +145,7 @@ TEST(BundleRefusalCli, aKilledExportsStagingFolderIsRefusedAndSweptByTheNextExpo
     const StoreWithCampaign other(dir);
     const QString big = dir.filePath(QStringLiteral("big"));
     // 400 000 sample times: an export long enough to be killed while it writes.
-    ASSERT_FALSE(writeBundle(generatedCampaign(400'000, 3), big));
+    ASSERT_FALSE(bundle::writeBundle(generatedCampaign(400'000, 3), big));
     const QString db = dir.filePath(QStringLiteral("big.sqlite"));
     ASSERT_EQ(runCli({QStringLiteral("import"), big, QStringLiteral("--db"), db}).exitCode, 0);
     const QString out = dir.filePath(QStringLiteral("out"));
@@ -164,7 +164,7 @@ TEST(BundleRefusalCli, aKilledExportsStagingFolderIsRefusedAndSweptByTheNextExpo
         for (const QString& name :
              QDir(dir.path())
                  .entryList({QStringLiteral("out.partial-*")}, QDir::Dirs | QDir::Hidden))
-            if (QFileInfo::exists(dir.filePath(name + QLatin1Char('/') + kExportLockFile)))
+            if (QFileInfo::exists(dir.filePath(name + QLatin1Char('/') + bundle::kExportLockFile)))
                 staging = dir.filePath(name);
         QThread::msleep(1);
     }
@@ -174,7 +174,7 @@ TEST(BundleRefusalCli, aKilledExportsStagingFolderIsRefusedAndSweptByTheNextExpo
     ASSERT_EQ(exporter.exitStatus(), QProcess::CrashExit);
     ASSERT_FALSE(QFileInfo::exists(out)) << "a killed export must leave no bundle at --out";
 
-    const QString lock = QDir(staging).filePath(kExportLockFile);
+    const QString lock = QDir(staging).filePath(bundle::kExportLockFile);
     const char* why =
         "the staging folder of an export that has not finished (killed, or still writing), not a "
         "bundle; the next export to the same folder removes a killed one";
@@ -259,7 +259,7 @@ TEST(BundleRefusalCli, anImportOntoAFullDiskSaysSoAndLeavesTheStoreWithItsCampai
 
     const StoreWithCampaign store(dir);
     const QString big = dir.filePath(QStringLiteral("big"));
-    ASSERT_FALSE(writeBundle(generatedCampaign(20'000), big));
+    ASSERT_FALSE(bundle::writeBundle(generatedCampaign(20'000), big));
     const QString after = dir.filePath(QStringLiteral("after"));
     QDir().mkpath(after);
     // The store is copied onto the small disk, imported into, and copied back

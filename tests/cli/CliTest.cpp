@@ -7,9 +7,9 @@
 #include <QTemporaryDir>
 
 #include "core/bundle/BundleReader.h"
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BadBundleCases.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BadBundleCases.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -57,8 +57,8 @@ TEST(Cli, importPrintsTheIdAndExportWritesTheSameCampaignBack) {
         runCli({QStringLiteral("export"), QStringLiteral("--db"), dbPath,
                 QStringLiteral("--campaign"), QStringLiteral("2"), QStringLiteral("--out"), out});
     ASSERT_EQ(exported.exitCode, 0) << exported.err.constData();
-    BundleReadResult original = readBundle(exampleBundlePath());
-    BundleReadResult back = readBundle(out);
+    bundle::BundleReadResult original = bundle::readBundle(exampleBundlePath());
+    bundle::BundleReadResult back = bundle::readBundle(out);
     ASSERT_TRUE(back.ok()) << qPrintable(back.error->toString());
     EXPECT_EQ(*back.campaign, *original.campaign);
 

@@ -13,8 +13,8 @@
 #include <QTemporaryDir>
 #include <cmath>
 
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab::test;
 

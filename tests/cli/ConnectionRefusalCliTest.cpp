@@ -16,8 +16,8 @@
 #include "acquisition/modbus/ModbusLink.h"
 #include "acquisition/modbus/ModbusUrl.h"
 #include "tests/acquisition/DevicePeer.h"
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;

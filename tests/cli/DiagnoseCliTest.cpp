@@ -10,7 +10,7 @@
 
 #include "db/DiagnosisStore.h"
 #include "db/ModelFitStore.h"
-#include "tests/cli/CliRunner.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;

@@ -11,8 +11,8 @@
 
 #include "core/bundle/BundleWriter.h"
 #include "db/CampaignStore.h"
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -43,7 +43,7 @@ void killImportWhileItWrites(const QString& bundle, const QString& dbPath) {
 QString bigBundle(const QTemporaryDir& dir) {
     const QString bundle = dir.filePath(QStringLiteral("big"));
     // 400 000 sample times × 8 columns: long enough an import to kill it while it writes.
-    EXPECT_FALSE(writeBundle(generatedCampaign(400'000, 3), bundle));
+    EXPECT_FALSE(bundle::writeBundle(generatedCampaign(400'000, 3), bundle));
     return bundle;
 }
 

@@ -10,8 +10,8 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab::test;
 

@@ -9,7 +9,7 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 
-#include "tests/cli/CliRunner.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab::test;
 

@@ -8,7 +8,7 @@
 #include <QTemporaryDir>
 
 #include "db/ModelFitStore.h"
-#include "tests/cli/CliRunner.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;

@@ -10,9 +10,9 @@
 #include <QJsonArray>
 #include <QTemporaryDir>
 
-#include "tests/cli/CliRunner.h"
 #include "tests/cli/RealWorldBundleSupport.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab::test;
 

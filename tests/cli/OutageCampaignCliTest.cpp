@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "db/CampaignStore.h"
-#include "tests/cli/CliRunner.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -113,14 +113,6 @@ void expectTheOutage(const QJsonArray& gaps, std::size_t readings) {
 const QString kNutLine = QStringLiteral(
     "hole in the log left out: run 'S3', T_nut, 2790–3100 s (a straight bridge "
     "could miss the channel's course by");
-
-QString pdfText(const QString& pdf) {
-    QProcess p;
-    p.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
-    EXPECT_TRUE(p.waitForFinished(60'000));
-    EXPECT_EQ(p.exitCode(), 0) << p.readAllStandardError().constData();
-    return QString::fromUtf8(p.readAllStandardOutput()).simplified();
-}
 
 }  // namespace
 
@@ -223,7 +215,7 @@ TEST(OutageCampaignCli, theReportSaysTheHoleWhereItShowsTheFitsAndTheDiagnosis) 
     const CliResult r =
         runCli(QStringList{"report"} + campaignArgs() + QStringList{"--run", "S1", "--pdf", pdf});
     ASSERT_EQ(r.exitCode, 0) << r.err.constData();
-    const QString text = pdfText(pdf);
+    const QString text = pdfText(pdf, PdfText::ReadingOrder);
     // The model comparison and the diagnosis, each once.
     QString nut = kNutLine;
     nut[0] = nut[0].toUpper();

@@ -12,8 +12,8 @@
 #include <QTemporaryDir>
 
 #include "acquisition/sim/SimulatedController.h"
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -28,10 +28,10 @@ QString importExample(const QTemporaryDir& dir) {
     return QString::fromUtf8(r.out.trimmed());
 }
 
-std::unique_ptr<push::SimulatedController> controller(driftlab::MachineState state) {
-    push::SimulatedControllerOptions options;
+std::unique_ptr<sim::SimulatedController> controller(driftlab::MachineState state) {
+    sim::SimulatedControllerOptions options;
     options.state = state;
-    auto sim = std::make_unique<push::SimulatedController>(options);
+    auto sim = std::make_unique<sim::SimulatedController>(options);
     QString error;
     EXPECT_TRUE(sim->start(&error)) << qPrintable(error);
     return sim;

@@ -5,20 +5,10 @@
 #include <QProcess>
 
 #include "core/bundle/BundleReader.h"
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 namespace driftlab::test {
-
-/// Runs a real tool (python3, zip) in `workDir`; fails the test if it fails.
-void runTool(const QString& program, const QStringList& args, const QString& workDir) {
-    QProcess p;
-    if (!workDir.isEmpty()) p.setWorkingDirectory(workDir);
-    p.start(program, args);
-    ASSERT_TRUE(p.waitForFinished(60'000)) << qPrintable(program);
-    ASSERT_EQ(p.exitCode(), 0) << qPrintable(program) << ": "
-                               << p.readAllStandardError().constData();
-}
 
 /// Imports `bundle` into a new store and exports it again: what DriftLab stored.
 Campaign importedAndExported(const QString& bundle, const QDir& work, QByteArray* err) {
@@ -33,7 +23,7 @@ Campaign importedAndExported(const QString& bundle, const QDir& work, QByteArray
         runCli({QStringLiteral("export"), QStringLiteral("--db"), db, QStringLiteral("--campaign"),
                 imported.out.trimmed(), QStringLiteral("--out"), out});
     EXPECT_EQ(exported.exitCode, 0) << exported.err.constData();
-    BundleReadResult back = readBundle(out);
+    bundle::BundleReadResult back = bundle::readBundle(out);
     EXPECT_TRUE(back.ok());
     return back.ok() ? *back.campaign : Campaign{};
 }

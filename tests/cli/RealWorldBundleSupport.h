@@ -7,11 +7,9 @@
 #include <QStringList>
 
 #include "core/domain/Campaign.h"
+#include "tests/support/CliRunner.h"  // runTool
 
 namespace driftlab::test {
-
-/// Runs a real tool (python3, zip) in `workDir`; fails the test if it fails.
-void runTool(const QString& program, const QStringList& args, const QString& workDir = {});
 
 /// Imports `bundle` into a new store and exports it again: what DriftLab stored.
 Campaign importedAndExported(const QString& bundle, const QDir& work, QByteArray* err = nullptr);

@@ -13,9 +13,9 @@
 #include <QTemporaryDir>
 
 #include "core/bundle/BundleReader.h"
-#include "tests/cli/CliRunner.h"
 #include "tests/cli/RealWorldBundleSupport.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -177,7 +177,7 @@ csv.writer(open(path, 'w', newline='')).writerows(rows)
 )";
     runTool(QStringLiteral(DRIFTLAB_PYTHON), {QStringLiteral("-c"), QString::fromUtf8(lateLogger),
                                               dir.filePath(QStringLiteral("late"))});
-    const BundleReadResult late = readBundle(dir.filePath(QStringLiteral("late")));
+    const bundle::BundleReadResult late = bundle::readBundle(dir.filePath(QStringLiteral("late")));
     ASSERT_TRUE(late.ok());
     EXPECT_EQ(late.campaign->findRun(QStringLiteral("S1"))->samples.time_s.front(), 900);
     EXPECT_FALSE(late.warnings.join(QLatin1Char('\n')).contains(QStringLiteral("clock")));
@@ -207,7 +207,7 @@ csv.writer(open(path, 'w', newline='', encoding='utf-8')).writerows(rows)
         bundle, script,
         "warning: positioning.csv: the cycles of run(s) 'S1' are counted from 1, with no cycle 0: "
         "their first pass, cycle 1, is read as the cold reference (cycle 0)");
-    const BundleReadResult read = readBundle(bundle);
+    const bundle::BundleReadResult read = bundle::readBundle(bundle);
     ASSERT_TRUE(read.ok());
     EXPECT_TRUE(read.warnings.contains(QStringLiteral(
         "positioning.csv:2: direction written as '↑', '↓': read as + (positive, ↑) and - "
@@ -226,7 +226,7 @@ csv.writer(open(path, 'w', newline='')).writerows(rows[:1] + [r for r in rows[1:
 )";
     runTool(QStringLiteral(DRIFTLAB_PYTHON),
             {QStringLiteral("-c"), QString::fromUtf8(dropColdPass), lost});
-    const BundleReadResult warm = readBundle(lost);
+    const bundle::BundleReadResult warm = bundle::readBundle(lost);
     ASSERT_TRUE(warm.ok());
     EXPECT_EQ(warm.campaign->findRun(QStringLiteral("S1"))->positioning.front().cycle, 1);
     const CliResult fit =
@@ -282,7 +282,7 @@ csv.writer(open(d + 'motion.csv', 'w', newline='')).writerows(rows)
         bundle, script,
         "warning: positioning.csv:1: column(s) 'air_temp_C', 'material_temp_C', 'pressure_hPa' "
         "not part of the format (run,time_s,cycle,target_mm,direction,deviation_um): ignored");
-    const BundleReadResult read = readBundle(bundle);
+    const bundle::BundleReadResult read = bundle::readBundle(bundle);
     ASSERT_TRUE(read.ok());
     EXPECT_TRUE(read.warnings.contains(
         QStringLiteral("motion.csv:1: column(s) 'comment' not part of the format "
@@ -360,7 +360,7 @@ for name, times in (('samples', [1]), ('positioning', [1]), ('motion', [1, 2])):
                                 "C];"));
     EXPECT_TRUE(readFile(QDir(bundle).filePath(QStringLiteral("campaign.json")))
                     .contains("\"kind\": \"SPINDLE\""));
-    const BundleReadResult read = readBundle(bundle);
+    const bundle::BundleReadResult read = bundle::readBundle(bundle);
     ASSERT_TRUE(read.ok());
     const QString warnings = read.warnings.join(QLatin1Char('\n'));
     for (const char* expected :

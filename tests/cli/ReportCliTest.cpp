@@ -16,21 +16,12 @@
 
 #include "core/bundle/BundleError.h"
 #include "core/bundle/CsvTable.h"
-#include "tests/cli/CliRunner.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
 
 namespace {
-
-/// The text of a PDF as `pdftotext -layout` gives it.
-QString pdfText(const QString& pdf) {
-    QProcess p;
-    p.start(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
-    EXPECT_TRUE(p.waitForFinished(60'000));
-    EXPECT_EQ(p.exitCode(), 0) << p.readAllStandardError().constData();
-    return QString::fromUtf8(p.readAllStandardOutput());
-}
 
 /// The rows of a CSV of the report, by column name.
 std::vector<std::map<QString, QString>> csvRows(const QString& path) {
@@ -38,14 +29,14 @@ std::vector<std::map<QString, QString>> csvRows(const QString& path) {
     EXPECT_TRUE(file->open(QIODevice::ReadOnly)) << qPrintable(path);
     std::vector<std::map<QString, QString>> rows;
     try {
-        CsvTable table(std::move(file), path);
+        bundle::CsvTable table(std::move(file), path);
         while (table.next()) {
             std::map<QString, QString> row;
             for (std::size_t c = 0; c < table.header().size(); ++c)
                 row[table.header()[c]] = table.text(int(c));
             rows.push_back(row);
         }
-    } catch (const BundleException& e) {
+    } catch (const bundle::BundleException& e) {
         ADD_FAILURE() << qPrintable(e.error.toString());
     }
     return rows;

@@ -14,7 +14,7 @@
 
 #include "db/CampaignStore.h"
 #include "db/RunLogger.h"
-#include "tests/cli/CliRunner.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;

@@ -16,7 +16,7 @@
 #include "core/procedures/ProcedurePlan.h"
 #include "db/CampaignStore.h"
 #include "tests/acquisition/DevicePeer.h"
-#include "tests/cli/CliRunner.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;

@@ -14,7 +14,7 @@
 
 #include "tests/acquisition/DevicePeer.h"
 #include "tests/acquisition/LoggedRunSupport.h"
-#include "tests/cli/CliRunner.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;

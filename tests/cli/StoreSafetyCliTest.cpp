@@ -13,9 +13,9 @@
 #include <QTemporaryDir>
 
 #include "db/CampaignStore.h"
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BundleTestSupport.h"
 #include "tests/db/StoreTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;

@@ -11,8 +11,8 @@
 #include <map>
 
 #include "core/bundle/BundleReader.h"
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -37,7 +37,7 @@ std::map<double, double> csvTable(const QString& path) {
 }  // namespace
 
 TEST(ThermalCompensateCli, theThermalPartIsMinusTheErrorMeasuredInTheHeldOutRunAtThatTime) {
-    const auto read = readBundle(campaignS1S3());
+    const auto read = bundle::readBundle(campaignS1S3());
     ASSERT_TRUE(read.ok());
     const driftlab::Run* s3 = nullptr;
     for (const driftlab::Run& run : read.campaign->runs)

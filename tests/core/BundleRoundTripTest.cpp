@@ -8,13 +8,13 @@
 
 #include "core/bundle/BundleReader.h"
 #include "core/bundle/BundleWriter.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
 
 TEST(BundleReader, readsTheExampleCampaignWithFeedAxisAndSpindleRuns) {
-    BundleReadResult result = readBundle(exampleBundlePath());
+    bundle::BundleReadResult result = bundle::readBundle(exampleBundlePath());
     ASSERT_TRUE(result.ok()) << qPrintable(result.error->toString());
     const Campaign& c = *result.campaign;
     EXPECT_EQ(c.name, QStringLiteral("X axis moving-state example"));
@@ -47,15 +47,15 @@ TEST(BundleReader, readsTheExampleCampaignWithFeedAxisAndSpindleRuns) {
 }
 
 TEST(BundleWriter, writeThenReadGivesTheSameCampaignAndTheSameBytes) {
-    BundleReadResult original = readBundle(exampleBundlePath());
+    bundle::BundleReadResult original = bundle::readBundle(exampleBundlePath());
     ASSERT_TRUE(original.ok());
     QTemporaryDir dir;
-    ASSERT_FALSE(writeBundle(*original.campaign, dir.filePath(QStringLiteral("a"))));
-    BundleReadResult again = readBundle(dir.filePath(QStringLiteral("a")));
+    ASSERT_FALSE(bundle::writeBundle(*original.campaign, dir.filePath(QStringLiteral("a"))));
+    bundle::BundleReadResult again = bundle::readBundle(dir.filePath(QStringLiteral("a")));
     ASSERT_TRUE(again.ok()) << qPrintable(again.error->toString());
     EXPECT_EQ(*again.campaign, *original.campaign);
 
-    ASSERT_FALSE(writeBundle(*again.campaign, dir.filePath(QStringLiteral("b"))));
+    ASSERT_FALSE(bundle::writeBundle(*again.campaign, dir.filePath(QStringLiteral("b"))));
     for (const char* name : {"campaign.json", "samples.csv", "motion.csv", "positioning.csv"})
         EXPECT_EQ(readFile(dir.filePath(QStringLiteral("a/") + QLatin1String(name))),
                   readFile(dir.filePath(QStringLiteral("b/") + QLatin1String(name))))
@@ -68,8 +68,8 @@ TEST(BundleWriter, numbersSurviveExactlyIncludingOnesWithoutAShortDecimalForm) {
     c.runs[0].samples.values[1][6] = 1e-300;
     c.runs[0].samples.values[2][7] = std::numeric_limits<double>::quiet_NaN();  // a dropout
     QTemporaryDir dir;
-    ASSERT_FALSE(writeBundle(c, dir.path()));
-    BundleReadResult back = readBundle(dir.path());
+    ASSERT_FALSE(bundle::writeBundle(c, dir.path()));
+    bundle::BundleReadResult back = bundle::readBundle(dir.path());
     ASSERT_TRUE(back.ok()) << qPrintable(back.error->toString());
     EXPECT_EQ(*back.campaign, c);
 }
@@ -79,14 +79,14 @@ TEST(BundleWriter, unknownKeysAreKeptForTheToolThatWroteThem) {
     copyBundle(exampleBundlePath(), dir.path());
     replaceInFile(dir.filePath(QStringLiteral("campaign.json")), "\"nut_length_mm\"",
                   "\"operator\": {\"name\": \"A. Engineer\"}, \"nut_length_mm\"");
-    BundleReadResult read = readBundle(dir.path());
+    bundle::BundleReadResult read = bundle::readBundle(dir.path());
     ASSERT_TRUE(read.ok());
     EXPECT_TRUE(read.warnings.isEmpty()) << qPrintable(read.warnings.join('\n'));
     EXPECT_EQ(read.campaign->extra.value(QStringLiteral("operator"))
                   .toObject()
                   .value(QStringLiteral("name")),
               QStringLiteral("A. Engineer"));
-    ASSERT_FALSE(writeBundle(*read.campaign, dir.filePath(QStringLiteral("out"))));
+    ASSERT_FALSE(bundle::writeBundle(*read.campaign, dir.filePath(QStringLiteral("out"))));
     EXPECT_TRUE(
         readFile(dir.filePath(QStringLiteral("out/campaign.json"))).contains("A. Engineer"));
 }
@@ -101,7 +101,7 @@ TEST(BundleWriter, aKilledExportsStagingFolderIsRefusedAndRemovedByTheNextExport
     ASSERT_GE(child, 0);
     if (child == 0) {
         QDir().mkpath(killed);
-        QLockFile lock(QDir(killed).filePath(kExportLockFile));
+        QLockFile lock(QDir(killed).filePath(bundle::kExportLockFile));
         const bool locked = lock.tryLock(0);
         for (const char* name : {"samples.csv", "motion.csv"})
             QFile::copy(QDir(exampleBundlePath()).filePath(QLatin1String(name)),
@@ -114,27 +114,28 @@ TEST(BundleWriter, aKilledExportsStagingFolderIsRefusedAndRemovedByTheNextExport
     // One this process is writing (its lock is held): neither read nor removed.
     const QString live = target + QStringLiteral(".partial-Lv22Yw");
     copyBundle(exampleBundlePath(), live);
-    QLockFile liveLock(QDir(live).filePath(kExportLockFile));
+    QLockFile liveLock(QDir(live).filePath(bundle::kExportLockFile));
     ASSERT_TRUE(liveLock.tryLock(0));
 
-    const QString why = kExportLockFile + QStringLiteral(
-                                              ": the staging folder of an export that has not "
-                                              "finished (killed, or still writing), not a bundle; "
-                                              "the next export to the same folder removes a "
-                                              "killed one");
+    const QString why =
+        bundle::kExportLockFile + QStringLiteral(
+                                      ": the staging folder of an export that has not "
+                                      "finished (killed, or still writing), not a bundle; "
+                                      "the next export to the same folder removes a "
+                                      "killed one");
     for (const QString& staged : {killed, live}) {
-        const BundleReadResult read = readBundle(staged);
+        const bundle::BundleReadResult read = bundle::readBundle(staged);
         ASSERT_FALSE(read.ok()) << qPrintable(staged);
         EXPECT_EQ(read.error->toString(), why);
     }
 
-    ASSERT_FALSE(writeBundle(exampleCampaign(), target));
+    ASSERT_FALSE(bundle::writeBundle(exampleCampaign(), target));
     EXPECT_FALSE(QFileInfo::exists(killed)) << "the killed export's folder must be removed";
     EXPECT_TRUE(QFileInfo::exists(QDir(live).filePath(QStringLiteral("campaign.json"))))
         << "a running export's folder must be left alone";
-    const BundleReadResult written = readBundle(target);
+    const bundle::BundleReadResult written = bundle::readBundle(target);
     ASSERT_TRUE(written.ok()) << qPrintable(written.error->toString());
-    EXPECT_FALSE(QFileInfo::exists(QDir(target).filePath(kExportLockFile)));
+    EXPECT_FALSE(QFileInfo::exists(QDir(target).filePath(bundle::kExportLockFile)));
 }
 
 TEST(BundleReader, rowsWithoutAnyValueAreSkippedWithAWarning) {
@@ -142,7 +143,7 @@ TEST(BundleReader, rowsWithoutAnyValueAreSkippedWithAWarning) {
     copyBundle(exampleBundlePath(), dir.path());
     replaceInFile(dir.filePath(QStringLiteral("samples.csv")), "\nS1,30,",
                   "\nS1,25,,,,,,,,,,,,,,,,\nS1,30,");
-    BundleReadResult read = readBundle(dir.path());
+    bundle::BundleReadResult read = bundle::readBundle(dir.path());
     ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
     ASSERT_EQ(read.warnings.size(), 1);
     EXPECT_TRUE(
@@ -153,11 +154,11 @@ TEST(BundleReader, rowsWithoutAnyValueAreSkippedWithAWarning) {
 
 TEST(BundleReader, progressCallbackCanCancelAndNothingIsReturned) {
     QTemporaryDir dir;
-    ASSERT_FALSE(writeBundle(generatedCampaign(200'000), dir.path()));
+    ASSERT_FALSE(bundle::writeBundle(generatedCampaign(200'000), dir.path()));
     int calls = 0;
-    BundleReadOptions options;
+    bundle::BundleReadOptions options;
     options.progress = [&](double) { return ++calls < 2; };
-    BundleReadResult read = readBundle(dir.path(), options);
+    bundle::BundleReadResult read = bundle::readBundle(dir.path(), options);
     EXPECT_FALSE(read.ok());
     ASSERT_TRUE(read.error);
     EXPECT_EQ(read.error->message, QStringLiteral("import cancelled"));

@@ -10,8 +10,8 @@
 #include <future>
 
 #include "core/bundle/BundleReader.h"
-#include "tests/core/BadBundleCases.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BadBundleCases.h"
+#include "tests/support/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -24,7 +24,7 @@ TEST_P(BadBundle, isRejectedWithFileLineColumnAndReason) {
     copyBundle(exampleBundlePath(), dir.path());
     bad.breakIt(dir.path());
 
-    BundleReadResult result = readBundle(dir.path());
+    bundle::BundleReadResult result = bundle::readBundle(dir.path());
     EXPECT_FALSE(result.ok());
     ASSERT_TRUE(result.error.has_value());
     const QString text = result.error->toString();
@@ -36,7 +36,7 @@ INSTANTIATE_TEST_SUITE_P(EveryClass, BadBundle, ::testing::ValuesIn(badBundleCas
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST(BundleReader, missingFolderIsNamed) {
-    BundleReadResult result = readBundle(QStringLiteral("/nonexistent/bundle"));
+    bundle::BundleReadResult result = bundle::readBundle(QStringLiteral("/nonexistent/bundle"));
     ASSERT_TRUE(result.error);
     EXPECT_EQ(result.error->toString(),
               QStringLiteral("/nonexistent/bundle: no such bundle folder or archive"));
@@ -49,14 +49,14 @@ TEST(BundleReader, aFifoInTheBundleIsRefusedWithoutWaitingForAWriter) {
         const QByteArray fifo = QFile::encodeName(dir.filePath(QLatin1String(name)));
         ASSERT_EQ(unlink(fifo.constData()), 0);
         ASSERT_EQ(mkfifo(fifo.constData(), 0644), 0);
-        auto read = std::async(std::launch::async, [&] { return readBundle(dir.path()); });
+        auto read = std::async(std::launch::async, [&] { return bundle::readBundle(dir.path()); });
         if (read.wait_for(std::chrono::seconds(20)) != std::future_status::ready) {
             // A writer that closes at once ends the reader's wait, so the test can end.
             const int fd = open(fifo.constData(), O_WRONLY | O_NONBLOCK);
             if (fd >= 0) close(fd);
             ADD_FAILURE() << "the reader waited for a writer on " << name;
         }
-        const BundleReadResult result = read.get();
+        const bundle::BundleReadResult result = read.get();
         ASSERT_TRUE(result.error) << name;
         EXPECT_EQ(result.error->toString(),
                   QLatin1String(name) +
@@ -73,7 +73,7 @@ TEST(BundleReader, unknownKeysInTheFormatsObjectsAreNamedAndKept) {
     // Top level: another tool's key without a word, a near miss of a given key named.
     replaceInFile(json, "\"nut_length_mm\"",
                   "\"tool\": \"x\", \"nut_lenght_mm\": 80, \"nut_length_mm\"");
-    const BundleReadResult read = readBundle(dir.path());
+    const bundle::BundleReadResult read = bundle::readBundle(dir.path());
     ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
     EXPECT_EQ(read.warnings,
               QStringList({QStringLiteral("campaign.json: nut_lenght_mm: unknown key, kept as is "
@@ -92,7 +92,7 @@ TEST(BundleReader, feedAxisRunWithoutScrewIsRejected) {
     QTemporaryDir dir;
     copyBundle(exampleBundlePath(), dir.path());
     replaceInFile(dir.filePath(QStringLiteral("campaign.json")), "\"nut_length_mm\": 80,", "");
-    BundleReadResult result = readBundle(dir.path());
+    bundle::BundleReadResult result = bundle::readBundle(dir.path());
     ASSERT_TRUE(result.error);
     EXPECT_EQ(result.error->toString(),
               QStringLiteral("campaign.json: runs[0]: a moving run needs 'screw' and "
@@ -103,7 +103,7 @@ TEST(BundleReader, expansionCoefficientInPpmIsAUnitMixUp) {
     QTemporaryDir dir;
     copyBundle(exampleBundlePath(), dir.path());
     replaceInFile(dir.filePath(QStringLiteral("campaign.json")), "1.15e-05", "11.5");
-    BundleReadResult result = readBundle(dir.path());
+    bundle::BundleReadResult result = bundle::readBundle(dir.path());
     ASSERT_TRUE(result.error);
     EXPECT_TRUE(result.error->toString().startsWith(
         QStringLiteral("campaign.json: screw.alpha_per_K: 11.5 per K")))
@@ -120,9 +120,9 @@ TEST(BundleReader, aColumnInFahrenheitOrKelvinIsReadInCelsius) {
                   [](double c) { return QByteArray::number(c + 273.15, 'g', 17); });
     replaceInFile(samples, "run,time_s,T_nut,T_bearing_fixed,",
                   "run,time_s,T_nut [°F],T_bearing_fixed (K),");
-    const BundleReadResult converted = readBundle(dir.path());
+    const bundle::BundleReadResult converted = bundle::readBundle(dir.path());
     ASSERT_TRUE(converted.ok()) << qPrintable(converted.error->toString());
-    const BundleReadResult plain = readBundle(exampleBundlePath());
+    const bundle::BundleReadResult plain = bundle::readBundle(exampleBundlePath());
     ASSERT_TRUE(plain.ok());
     for (const char* id : {"T_nut", "T_bearing_fixed"}) {
         const SampleSeries& want = plain.campaign->runs.front().samples;
@@ -153,7 +153,7 @@ TEST(BundleReader, deviationsInMillimetresAreReadWithAWarning) {
     copyBundle(exampleBundlePath(), dir.path());
     rewriteColumn(dir.filePath(QStringLiteral("positioning.csv")), 5,  // deviation_um
                   [](double um) { return QByteArray::number(um / 1000, 'g', 12); });
-    const BundleReadResult result = readBundle(dir.path());
+    const bundle::BundleReadResult result = bundle::readBundle(dir.path());
     ASSERT_TRUE(result.ok());
     EXPECT_TRUE(
         result.warnings.join(QLatin1Char('\n'))
@@ -162,7 +162,8 @@ TEST(BundleReader, deviationsInMillimetresAreReadWithAWarning) {
         << qPrintable(result.warnings.join(QLatin1Char('\n')));
     // The example as written, in µm, gets no such warning.
     copyBundle(exampleBundlePath(), dir.filePath(QStringLiteral("plain")));
-    const BundleReadResult plain = readBundle(dir.filePath(QStringLiteral("plain")));
+    const bundle::BundleReadResult plain =
+        bundle::readBundle(dir.filePath(QStringLiteral("plain")));
     ASSERT_TRUE(plain.ok());
     EXPECT_FALSE(plain.warnings.join(QLatin1Char('\n')).contains(QStringLiteral("mm instead")));
 }
@@ -174,7 +175,7 @@ TEST(BundleReader, aDriftProbeInMillimetresIsReadWithAWarning) {
     rewriteColumn(
         dir.filePath(QStringLiteral("samples.csv")), 10,  // D_x
         [](double um) { return QByteArray::number(um / 1000, 'g', 12); }, "SP1");
-    const BundleReadResult result = readBundle(dir.path());
+    const bundle::BundleReadResult result = bundle::readBundle(dir.path());
     ASSERT_TRUE(result.ok());
     const QString warnings = result.warnings.join(QLatin1Char('\n'));
     EXPECT_TRUE(
@@ -199,13 +200,13 @@ TEST(BundleReader, namesSpelledByHandAreTheNamesTheyMean) {
     replaceInFile(json, "\"quantity\": \"displacement\"", "\"quantity\": \"Displacement\"");
     replaceInFile(json, "\"mounting\": \"fixed-free\"", "\"mounting\": \"Fixed-Free\"");
     replaceInFile(json, "\"range_mm\": [\n        210,\n        490", "\"range_mm\": [490, 210");
-    const BundleReadResult result = readBundle(dir.path());
+    const bundle::BundleReadResult result = bundle::readBundle(dir.path());
     ASSERT_TRUE(result.ok()) << qPrintable(result.error->toString());
     EXPECT_EQ(*result.campaign, exampleCampaign());
 
     // A name that is none of them lists what is.
     replaceInFile(json, "\"role\": \"Nut\"", "\"role\": \"nut flank\"");
-    const BundleReadResult wrong = readBundle(dir.path());
+    const bundle::BundleReadResult wrong = bundle::readBundle(dir.path());
     ASSERT_TRUE(wrong.error);
     EXPECT_TRUE(wrong.error->toString().endsWith(QStringLiteral(
         "unknown role 'nut flank' for a temperature channel (expected nut, bearing, ambient, "
@@ -230,7 +231,7 @@ TEST(BundleReader, aDeclaredChannelWithoutAColumnAndARunWithoutRecordsAreNamed) 
         kept << cells.join(',');
     }
     writeFile(samples, kept.join('\n') + '\n');
-    const BundleReadResult result = readBundle(dir.path());
+    const bundle::BundleReadResult result = bundle::readBundle(dir.path());
     ASSERT_TRUE(result.ok()) << qPrintable(result.error->toString());
     EXPECT_TRUE(result.warnings.contains(QStringLiteral(
         "samples.csv: no column for channel(s) 'T_air' of campaign.json: they carry no reading")))
@@ -239,7 +240,7 @@ TEST(BundleReader, aDeclaredChannelWithoutAColumnAndARunWithoutRecordsAreNamed) 
         QStringLiteral("run(s) 'SP1' of campaign.json have no record in any file: no data")))
         << qPrintable(result.warnings.join(QLatin1Char('\n')));
     // The example as written has a column for every channel and rows for every run.
-    const BundleReadResult plain = readBundle(exampleBundlePath());
+    const bundle::BundleReadResult plain = bundle::readBundle(exampleBundlePath());
     ASSERT_TRUE(plain.ok());
     EXPECT_FALSE(plain.warnings.join(QLatin1Char('\n')).contains(QStringLiteral("no data")));
     EXPECT_FALSE(plain.warnings.join(QLatin1Char('\n')).contains(QStringLiteral("no column")));

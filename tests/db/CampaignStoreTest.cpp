@@ -8,7 +8,7 @@
 #include "core/bundle/BundleWriter.h"
 #include "db/CampaignStore.h"
 #include "db/SchemaMigrations.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -79,9 +79,10 @@ TEST(CampaignStore, importExportImportIsLossless) {
     ASSERT_TRUE(first);
     auto loaded = store->loadCampaign(*first, &error);
     ASSERT_TRUE(loaded);
-    ASSERT_FALSE(writeBundle(*loaded, dir.filePath(QStringLiteral("exported"))));
+    ASSERT_FALSE(bundle::writeBundle(*loaded, dir.filePath(QStringLiteral("exported"))));
 
-    BundleReadResult exported = readBundle(dir.filePath(QStringLiteral("exported")));
+    bundle::BundleReadResult exported =
+        bundle::readBundle(dir.filePath(QStringLiteral("exported")));
     ASSERT_TRUE(exported.ok()) << qPrintable(exported.error->toString());
     auto second = store->importCampaign(*exported.campaign, &error);
     ASSERT_TRUE(second);
@@ -90,7 +91,7 @@ TEST(CampaignStore, importExportImportIsLossless) {
     ASSERT_TRUE(reloaded);
     EXPECT_EQ(*reloaded, *loaded);
     // The bundle files themselves are identical too.
-    ASSERT_FALSE(writeBundle(*reloaded, dir.filePath(QStringLiteral("exported2"))));
+    ASSERT_FALSE(bundle::writeBundle(*reloaded, dir.filePath(QStringLiteral("exported2"))));
     for (const char* name : {"campaign.json", "samples.csv", "motion.csv", "positioning.csv"})
         EXPECT_EQ(sha256OfFile(dir.filePath(QStringLiteral("exported/") + QLatin1String(name))),
                   sha256OfFile(dir.filePath(QStringLiteral("exported2/") + QLatin1String(name))))
@@ -137,8 +138,8 @@ TEST(CampaignStore, importsAMillionSampleBundle) {
     QTemporaryDir dir;
     // 125,000 sample times x 8 columns = one million sample values.
     const Campaign big = generatedCampaign(125'000, 11);
-    ASSERT_FALSE(writeBundle(big, dir.filePath(QStringLiteral("big"))));
-    BundleReadResult read = readBundle(dir.filePath(QStringLiteral("big")));
+    ASSERT_FALSE(bundle::writeBundle(big, dir.filePath(QStringLiteral("big"))));
+    bundle::BundleReadResult read = bundle::readBundle(dir.filePath(QStringLiteral("big")));
     ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
 
     auto store = openStore(dir.filePath(QStringLiteral("lab.sqlite")));

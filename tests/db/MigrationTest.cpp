@@ -10,7 +10,7 @@
 #include "db/CampaignStore.h"
 #include "db/PushHistory.h"
 #include "db/SchemaMigrations.h"
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
 
 using namespace driftlab;
 using driftlab::db::CampaignStore;
@@ -105,7 +105,7 @@ TEST(SchemaMigration, aDatabaseFromANewerBuildIsRefusedNotDamaged) {
 TEST(SchemaMigration, aSchemaV2StoreKeepsEverySampleWhenItsRowsMoveIntoBlocks) {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("v2.sqlite"));
-    BundleReadResult example = readBundle(test::exampleBundlePath());
+    bundle::BundleReadResult example = bundle::readBundle(test::exampleBundlePath());
     ASSERT_TRUE(example.ok());
     const Campaign& c = *example.campaign;
     {

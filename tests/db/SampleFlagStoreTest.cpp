@@ -10,8 +10,8 @@
 #include "db/CampaignStore.h"
 #include "db/SampleFlagStore.h"
 #include "db/SchemaMigrations.h"
-#include "tests/core/BundleTestSupport.h"
 #include "tests/db/StoreTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -32,7 +32,7 @@ std::unique_ptr<CampaignStore> newStore(const QString& path) {
 /// The example campaign with T_bearing_fixed of run S1 shorted (−50 °C, the
 /// module's clamp) on rows 20…25.
 Campaign campaignWithShortedSensor() {
-    BundleReadResult r = readBundle(exampleBundlePath());
+    bundle::BundleReadResult r = bundle::readBundle(exampleBundlePath());
     EXPECT_TRUE(r.ok());
     Campaign c = *r.campaign;
     SampleSeries& s = c.runs.front().samples;

@@ -11,8 +11,8 @@
 #include "db/CampaignImport.h"
 #include "db/CampaignStore.h"
 #include "db/SchemaMigrations.h"
-#include "tests/core/BundleTestSupport.h"
 #include "tests/db/StoreTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -280,7 +280,7 @@ TEST(StoreSafety, aStoreLockedByAnotherProcessIsWaitedForThenNamedAsInUse) {
     QString error;
     auto store = CampaignStore::open(path, StoreAccess::ReadWrite, &error);
     ASSERT_TRUE(store) << qPrintable(error);
-    const auto source = openBundleFolder(exampleBundlePath(), &error);
+    const auto source = bundle::openBundleFolder(exampleBundlePath(), &error);
     const db::BundleCheck checked = db::checkBundle(*source);
     ASSERT_TRUE(checked.ok()) << qPrintable(checked.error);
     {
@@ -303,9 +303,9 @@ TEST(StoreSafety, anImportThatFillsTheDiskSaysSoAndLeavesTheStoreAsItWas) {
     const QString path = dir.filePath(QStringLiteral("lab.sqlite"));
     writeExampleStore(path);
     const QString bundle = dir.filePath(QStringLiteral("big"));
-    ASSERT_FALSE(writeBundle(generatedCampaign(20'000), bundle));
+    ASSERT_FALSE(bundle::writeBundle(generatedCampaign(20'000), bundle));
     QString error;
-    const auto source = openBundleFolder(bundle, &error);
+    const auto source = bundle::openBundleFolder(bundle, &error);
     const db::BundleCheck checked = db::checkBundle(*source);
     ASSERT_TRUE(checked.ok()) << qPrintable(checked.error);
 

@@ -12,8 +12,8 @@
 
 #include "core/diagnosis/Diagnosis.h"
 #include "core/rig/CampaignSimulator.h"
-#include "tests/diagnosis/SuiteOutcomes.h"
 #include "tests/diagnosis/SuiteStates.h"
+#include "tests/support/SuiteOutcomes.h"
 
 using namespace driftlab;
 

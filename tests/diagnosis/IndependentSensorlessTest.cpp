@@ -22,8 +22,8 @@ models::CrossStateMatrix matrixOf(const QString& model, const std::vector<models
 }
 
 void expectSensorlessWithinThreeTimesHeatTransfer(const QString& bundle) {
-    const BundleReadResult read =
-        readBundle(QDir(QStringLiteral(DRIFTLAB_INDEPENDENT_SUITE)).filePath(bundle));
+    const bundle::BundleReadResult read =
+        bundle::readBundle(QDir(QStringLiteral(DRIFTLAB_INDEPENDENT_SUITE)).filePath(bundle));
     ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
     QStringList ids;
     for (const auto& r : read.campaign->runs) ids << r.id;

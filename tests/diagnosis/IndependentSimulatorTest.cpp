@@ -22,7 +22,7 @@
 
 #include "core/bundle/BundleReader.h"
 #include "core/diagnosis/Diagnosis.h"
-#include "tests/diagnosis/SuiteOutcomes.h"
+#include "tests/support/SuiteOutcomes.h"
 
 using namespace driftlab;
 
@@ -130,7 +130,7 @@ std::map<QString, QString> manifest(const QDir& set) {
 }
 
 diagnosis::DiagnosisResult diagnoseFolder(const QString& directory) {
-    const BundleReadResult read = readBundle(directory);
+    const bundle::BundleReadResult read = bundle::readBundle(directory);
     diagnosis::DiagnosisResult r;
     if (!read.ok()) {
         r.error = QStringLiteral("refused: ") + read.error->toString();

@@ -39,12 +39,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     source.add(QStringLiteral("campaign.json"), campaignJson);
     for (qsizetype i = 0; i < parts.size() && i < 3; ++i) source.add(names[i], parts[i]);
 
-    driftlab::BundleReadOptions options;
+    driftlab::bundle::BundleReadOptions options;
     options.progress = [](double fraction) {
         if (!(fraction >= 0 && fraction <= 1)) std::abort();
         return true;
     };
-    const driftlab::BundleReadResult result = driftlab::readBundle(source, options);
+    const driftlab::bundle::BundleReadResult result = driftlab::bundle::readBundle(source, options);
     if (result.ok() == result.error.has_value()) std::abort();  // exactly one of them
     return 0;
 }

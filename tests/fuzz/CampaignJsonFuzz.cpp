@@ -9,20 +9,20 @@
 #include "core/bundle/BundleError.h"
 #include "core/bundle/CampaignJson.h"
 
-using driftlab::BundleException;
+using driftlab::bundle::BundleException;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const QByteArray json(reinterpret_cast<const char*>(data), qsizetype(size));
     driftlab::Campaign campaign;
     try {
-        campaign = driftlab::campaignFromJson(json, QStringLiteral("campaign.json"));
-    } catch (const BundleException&) {
+        campaign = driftlab::bundle::campaignFromJson(json, QStringLiteral("campaign.json"));
+    } catch (const driftlab::bundle::BundleException&) {
         return 0;
     }
-    const QByteArray written = QJsonDocument(driftlab::campaignToJson(campaign)).toJson();
+    const QByteArray written = QJsonDocument(driftlab::bundle::campaignToJson(campaign)).toJson();
     try {
-        (void)driftlab::campaignFromJson(written, QStringLiteral("campaign.json"));
-    } catch (const BundleException&) {
+        (void)driftlab::bundle::campaignFromJson(written, QStringLiteral("campaign.json"));
+    } catch (const driftlab::bundle::BundleException&) {
         std::abort();  // a campaign we accepted must survive its own export
     }
     return 0;

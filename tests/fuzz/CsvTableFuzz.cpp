@@ -8,15 +8,15 @@
 
 #include "core/bundle/CsvTable.h"
 
-using driftlab::BundleException;
-using driftlab::CsvTable;
+using driftlab::bundle::BundleException;
+using driftlab::bundle::CsvTable;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     auto buffer = std::make_unique<QBuffer>();
     buffer->setData(reinterpret_cast<const char*>(data), qsizetype(size));
     if (!buffer->open(QIODevice::ReadOnly)) return 0;
     try {
-        CsvTable csv(std::move(buffer), QStringLiteral("samples.csv"));
+        driftlab::bundle::CsvTable csv(std::move(buffer), QStringLiteral("samples.csv"));
         (void)csv.europeanFormat();
         (void)csv.column(QStringLiteral("run"));
         const int columns = int(csv.header().size());
@@ -28,19 +28,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 (void)csv.text(c);
                 try {
                     (void)csv.number(c);
-                } catch (const BundleException&) {
+                } catch (const driftlab::bundle::BundleException&) {
                 }
                 try {
                     (void)csv.numberOrMissing(c);
-                } catch (const BundleException&) {
+                } catch (const driftlab::bundle::BundleException&) {
                 }
                 try {
                     (void)csv.integer(c);
-                } catch (const BundleException&) {
+                } catch (const driftlab::bundle::BundleException&) {
                 }
             }
         }
-    } catch (const BundleException&) {
+    } catch (const driftlab::bundle::BundleException&) {
     }
     return 0;
 }

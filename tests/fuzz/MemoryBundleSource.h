@@ -8,7 +8,7 @@
 
 namespace driftlab {
 
-class MemoryBundleSource : public BundleSource {
+class MemoryBundleSource : public bundle::BundleSource {
 public:
     void add(const QString& fileName, QByteArray bytes) { m_files.insert(fileName, bytes); }
 

@@ -27,9 +27,11 @@ TEST(AirRefractiveIndex, matchesPublishedNistFormExamples) {
         {60, 80, 1.0002339748542823, 1.0002340241754055},
     };
     for (const auto& p : published) {
-        const AirState air{p.temperature_C, 101'325.0, p.humidity_pct, 450.0};
-        EXPECT_NEAR(edlenRefractiveIndex(air, 633.0), p.edlen, 1e-12) << p.temperature_C;
-        EXPECT_NEAR(ciddorRefractiveIndex(air, 633.0), p.ciddor, 1e-12) << p.temperature_C;
+        const interferometer::AirState air{p.temperature_C, 101'325.0, p.humidity_pct, 450.0};
+        EXPECT_NEAR(interferometer::edlenRefractiveIndex(air, 633.0), p.edlen, 1e-12)
+            << p.temperature_C;
+        EXPECT_NEAR(interferometer::ciddorRefractiveIndex(air, 633.0), p.ciddor, 1e-12)
+            << p.temperature_C;
     }
 }
 
@@ -42,9 +44,9 @@ TEST(AirRefractiveIndex, edlenAndCiddorAgreeOverTheLabRange) {
     for (double t = 0; t <= 40; t += 5)
         for (double p = 80'000; p <= 110'000; p += 5'000)
             for (double rh = 0; rh <= 90; rh += 15) {
-                const AirState air{t, p, rh, 450.0};
-                worst = std::max(worst,
-                                 std::abs(edlenRefractiveIndex(air) - ciddorRefractiveIndex(air)));
+                const interferometer::AirState air{t, p, rh, 450.0};
+                worst = std::max(worst, std::abs(interferometer::edlenRefractiveIndex(air) -
+                                                 interferometer::ciddorRefractiveIndex(air)));
             }
     EXPECT_LT(worst, 2e-8);
 }
@@ -53,10 +55,12 @@ TEST(AirRefractiveIndex, edlenAndCiddorAgreeOverTheLabRange) {
 // 50 %RH: −0.93 ppm/K, +2.7 ppm/kPa, −0.0085 ppm/%RH (from general knowledge,
 // not checked against a primary source here), to the stated tolerance.
 TEST(AirRefractiveIndex, sensitivitiesNearStandardConditionsAreTheTextbookOnes) {
-    const AirState base{20.0, 101'325.0, 50.0, 450.0};
-    const double n0 = edlenRefractiveIndex(base);
-    auto ppm = [&](AirState air) { return (edlenRefractiveIndex(air) - n0) * 1e6; };
-    AirState warmer = base, higher = base, wetter = base;
+    const interferometer::AirState base{20.0, 101'325.0, 50.0, 450.0};
+    const double n0 = interferometer::edlenRefractiveIndex(base);
+    auto ppm = [&](interferometer::AirState air) {
+        return (interferometer::edlenRefractiveIndex(air) - n0) * 1e6;
+    };
+    interferometer::AirState warmer = base, higher = base, wetter = base;
     warmer.temperature_C += 1.0;
     higher.pressure_Pa += 1000.0;
     wetter.humidity_pct += 10.0;
@@ -71,31 +75,35 @@ TEST(AirRefractiveIndex, sensitivitiesNearStandardConditionsAreTheTextbookOnes) 
 // Saturation vapour pressure against steam-table values (IAPWS): 2339 Pa at
 // 20 °C, 611.2 Pa at 0.01 °C (triple point: 611.657 Pa), 101418 Pa at 100 °C.
 TEST(AirRefractiveIndex, saturationVapourPressureMatchesSteamTables) {
-    EXPECT_NEAR(saturationVapourPressure_Pa(20.0), 2339.2, 0.5);
-    EXPECT_NEAR(saturationVapourPressure_Pa(0.01), 611.657, 0.01);
-    EXPECT_NEAR(saturationVapourPressure_Pa(100.0), 101'418, 5);
+    EXPECT_NEAR(interferometer::saturationVapourPressure_Pa(20.0), 2339.2, 0.5);
+    EXPECT_NEAR(interferometer::saturationVapourPressure_Pa(0.01), 611.657, 0.01);
+    EXPECT_NEAR(interferometer::saturationVapourPressure_Pa(100.0), 101'418, 5);
 }
 
 TEST(AirRefractiveIndex, co2RaisesTheIndexByCiddorsFactor) {
-    AirState air{20.0, 101'325.0, 0.0, 450.0};
-    const double n450 = edlenRefractiveIndex(air);
+    interferometer::AirState air{20.0, 101'325.0, 0.0, 450.0};
+    const double n450 = interferometer::edlenRefractiveIndex(air);
     air.co2_ppm = 1450.0;
     // +1000 ppm CO2: (n−1)·0.534e-3 ≈ +0.145 ppm (Ciddor 1996).
-    EXPECT_NEAR((edlenRefractiveIndex(air) - n450) * 1e6, 0.145, 0.005);
-    EXPECT_NEAR(edlenRefractiveIndex(air) - ciddorRefractiveIndex(air), 0.0, 2e-8);
+    EXPECT_NEAR((interferometer::edlenRefractiveIndex(air) - n450) * 1e6, 0.145, 0.005);
+    EXPECT_NEAR(
+        interferometer::edlenRefractiveIndex(air) - interferometer::ciddorRefractiveIndex(air), 0.0,
+        2e-8);
 }
 
 TEST(AirRefractiveIndex, rangeProblemsNameTheUnitMixUp) {
-    EXPECT_FALSE(airStateProblem(AirState{}).has_value());
-    const auto kelvin = airStateProblem(AirState{293.15, 101'325.0, 50.0});
+    EXPECT_FALSE(interferometer::airStateProblem(interferometer::AirState{}).has_value());
+    const auto kelvin =
+        interferometer::airStateProblem(interferometer::AirState{293.15, 101'325.0, 50.0});
     ASSERT_TRUE(kelvin);
     EXPECT_TRUE(kelvin->contains(QStringLiteral("kelvin"))) << kelvin->toStdString();
-    const auto hpa = airStateProblem(AirState{20.0, 1013.25, 50.0});
+    const auto hpa = interferometer::airStateProblem(interferometer::AirState{20.0, 1013.25, 50.0});
     ASSERT_TRUE(hpa);
     EXPECT_TRUE(hpa->contains(QStringLiteral("hPa?"))) << hpa->toStdString();
-    const auto kpa = airStateProblem(AirState{20.0, 101.325, 50.0});
+    const auto kpa = interferometer::airStateProblem(interferometer::AirState{20.0, 101.325, 50.0});
     ASSERT_TRUE(kpa);
     EXPECT_TRUE(kpa->contains(QStringLiteral("kPa?"))) << kpa->toStdString();
-    EXPECT_TRUE(airStateProblem(AirState{20.0, 101'325.0, 120.0}));
-    EXPECT_TRUE(airStateProblem(AirState{20.0, 101'325.0, std::nan("")}));
+    EXPECT_TRUE(interferometer::airStateProblem(interferometer::AirState{20.0, 101'325.0, 120.0}));
+    EXPECT_TRUE(
+        interferometer::airStateProblem(interferometer::AirState{20.0, 101'325.0, std::nan("")}));
 }

@@ -18,8 +18,8 @@ QString writeCsv(const QTemporaryDir& dir, const QByteArray& text) {
     return path;
 }
 
-InterferometerHeader off() {
-    InterferometerHeader h;
+interferometer::InterferometerHeader off() {
+    interferometer::InterferometerHeader h;
     h.compensationOn = false;
     h.assumedIndex = 1.0;
     return h;
@@ -36,11 +36,14 @@ TEST(InterferometerCsvImport, correctsEachRowWithTheAirOfItsRowOrTheRowBefore) {
                                   "0,0,0,start,20.5,101000,40\n"
                                   "100,1,1.5,,,,\n"
                                   "200,2,3,,21.5,100500,45\n");
-    const InterferometerCsvImport imported = importInterferometerCsv(path, off());
+    const interferometer::InterferometerCsvImport imported =
+        interferometer::importInterferometerCsv(path, off());
     ASSERT_FALSE(imported.error) << imported.error->toString().toStdString();
     ASSERT_EQ(imported.readings.size(), 3u);
-    const double n1 = edlenRefractiveIndex(AirState{20.5, 101'000, 40});
-    const double n2 = edlenRefractiveIndex(AirState{21.5, 100'500, 45});
+    const double n1 =
+        interferometer::edlenRefractiveIndex(interferometer::AirState{20.5, 101'000, 40});
+    const double n2 =
+        interferometer::edlenRefractiveIndex(interferometer::AirState{21.5, 100'500, 45});
     EXPECT_EQ(imported.readings[1].line, 3);
     EXPECT_NEAR(imported.readings[1].position_mm, 100.0 / n1, 1e-12);
     EXPECT_NEAR(imported.readings[1].deviation_um, 1.5 + 100.0 * 1000 * (1 / n1 - 1), 1e-7);
@@ -56,12 +59,14 @@ TEST(InterferometerCsvImport, columnsAsAVendorSpellsThemWithTheirUnitsAreTheLayo
     const QByteArray rows = "0,0,0,20.5,101000,40\n100,1,1.5,21.5,100500,45\n";
     const QString plain =
         writeCsv(dir, "position_mm,time_s,deviation_um,air_C,pressure_Pa,humidity_pct\n" + rows);
-    const InterferometerCsvImport expected = importInterferometerCsv(plain, off());
+    const interferometer::InterferometerCsvImport expected =
+        interferometer::importInterferometerCsv(plain, off());
     const QString spelled = writeCsv(dir,
                                      "Position [mm],Time (s),Deviation [\xC2\xB5m],Air [\xC2\xB0"
                                      "C],Pressure [Pa],Humidity [%]\n" +
                                          rows);
-    const InterferometerCsvImport imported = importInterferometerCsv(spelled, off());
+    const interferometer::InterferometerCsvImport imported =
+        interferometer::importInterferometerCsv(spelled, off());
     ASSERT_FALSE(imported.error) << imported.error->toString().toStdString();
     ASSERT_EQ(imported.readings.size(), 2u);
     EXPECT_EQ(imported.readings[1].deviation_um, expected.readings[1].deviation_um);
@@ -73,7 +78,8 @@ TEST(InterferometerCsvImport, columnsAsAVendorSpellsThemWithTheirUnitsAreTheLayo
 TEST(InterferometerCsvImport, compensatedExportNeedsNoAir) {
     QTemporaryDir dir;
     const QString path = writeCsv(dir, "time_s,position_mm,deviation_um\n0,0,0\n1,100,1.5\n");
-    const InterferometerCsvImport imported = importInterferometerCsv(path, InterferometerHeader{});
+    const interferometer::InterferometerCsvImport imported =
+        interferometer::importInterferometerCsv(path, interferometer::InterferometerHeader{});
     ASSERT_FALSE(imported.error) << imported.error->toString().toStdString();
     ASSERT_EQ(imported.readings.size(), 2u);
     EXPECT_EQ(imported.readings[1].deviation_um, 1.5);
@@ -86,7 +92,8 @@ TEST(InterferometerCsvImport, errorsNameFileLineAndColumnAndKeepTheRowsBefore) {
                                  "time_s,position_mm,deviation_um,air_C,pressure_Pa,humidity_pct\n"
                                  "0,0,0,20,101325,50\n"
                                  "1,100,1,20,1013.25,50\n");
-    const InterferometerCsvImport a = importInterferometerCsv(hpa, off());
+    const interferometer::InterferometerCsvImport a =
+        interferometer::importInterferometerCsv(hpa, off());
     ASSERT_TRUE(a.error);
     EXPECT_EQ(a.error->toString(),
               QStringLiteral("export.csv:3:5: air pressure 1013.25 Pa is outside 60000…120000 Pa "
@@ -94,7 +101,8 @@ TEST(InterferometerCsvImport, errorsNameFileLineAndColumnAndKeepTheRowsBefore) {
     EXPECT_EQ(a.readings.size(), 1u);
 
     const QString noAir = writeCsv(dir, "time_s,position_mm,deviation_um\n0,0,0\n");
-    const InterferometerCsvImport b = importInterferometerCsv(noAir, off());
+    const interferometer::InterferometerCsvImport b =
+        interferometer::importInterferometerCsv(noAir, off());
     ASSERT_TRUE(b.error);
     EXPECT_EQ(b.error->toString(),
               QStringLiteral("export.csv:1: the interferometer's compensation was off but the "
@@ -102,7 +110,8 @@ TEST(InterferometerCsvImport, errorsNameFileLineAndColumnAndKeepTheRowsBefore) {
                              "it with"));
 
     const QString micrometres = writeCsv(dir, "time_s,position_mm,deviation_um\n0,150000,0\n");
-    const InterferometerCsvImport c = importInterferometerCsv(micrometres, InterferometerHeader{});
+    const interferometer::InterferometerCsvImport c = interferometer::importInterferometerCsv(
+        micrometres, interferometer::InterferometerHeader{});
     ASSERT_TRUE(c.error);
     EXPECT_EQ(c.error->toString(),
               QStringLiteral("export.csv:2:2: 150000 mm is beyond ±100000 mm (µm instead of mm?)"));

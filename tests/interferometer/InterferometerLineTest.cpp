@@ -13,10 +13,10 @@ namespace {
 
 /// Feeds `lines`; the error's text, or empty when all were accepted.
 std::string firstError(const std::vector<std::string>& lines) {
-    InterferometerSession session;
+    interferometer::InterferometerSession session;
     try {
         for (const auto& line : lines) session.feed(line);
-    } catch (const InterferometerLineError& e) {
+    } catch (const interferometer::InterferometerLineError& e) {
         return e.what();
     }
     return {};
@@ -28,28 +28,28 @@ const std::string kOn = "header,compensation=on";
 }  // namespace
 
 TEST(InterferometerLine, readsHeaderEnvironmentReadingsCommentsAndEnd) {
-    InterferometerLineParser parser;
+    interferometer::InterferometerLineParser parser;
     EXPECT_EQ(parser.parse("# DriftLab interferometer stream").kind,
-              InterferometerLine::Kind::Ignored);
+              interferometer::InterferometerLine::Kind::Ignored);
     const auto header = parser.parse(
         "header,compensation=off,reference=standard-air,"
         "wavelength_nm=632.991\r");
-    ASSERT_EQ(header.kind, InterferometerLine::Kind::Header);
+    ASSERT_EQ(header.kind, interferometer::InterferometerLine::Kind::Header);
     EXPECT_FALSE(header.header.compensationOn);
-    EXPECT_DOUBLE_EQ(header.header.assumedIndex, standardAirIndex());
-    EXPECT_EQ(parser.parse("").kind, InterferometerLine::Kind::Ignored);
+    EXPECT_DOUBLE_EQ(header.header.assumedIndex, interferometer::standardAirIndex());
+    EXPECT_EQ(parser.parse("").kind, interferometer::InterferometerLine::Kind::Ignored);
     const auto env = parser.parse("env,0.5,20.25,100900,41.5,20.8");
-    ASSERT_EQ(env.kind, InterferometerLine::Kind::Environment);
+    ASSERT_EQ(env.kind, interferometer::InterferometerLine::Kind::Environment);
     EXPECT_EQ(env.environment.air.temperature_C, 20.25);
     EXPECT_EQ(env.environment.air.pressure_Pa, 100900);
     EXPECT_EQ(env.environment.air.humidity_pct, 41.5);
     EXPECT_EQ(env.environment.material_C, 20.8);
     const auto reading = parser.parse("1.5, 250.0005, -3.25");
-    ASSERT_EQ(reading.kind, InterferometerLine::Kind::Position);
+    ASSERT_EQ(reading.kind, interferometer::InterferometerLine::Kind::Position);
     EXPECT_EQ(reading.position.time_s, 1.5);
     EXPECT_EQ(reading.position.position_mm, 250.0005);
     EXPECT_EQ(reading.position.deviation_um, -3.25);
-    EXPECT_EQ(parser.parse("end").kind, InterferometerLine::Kind::End);
+    EXPECT_EQ(parser.parse("end").kind, interferometer::InterferometerLine::Kind::End);
     EXPECT_TRUE(parser.ended());
     EXPECT_EQ(parser.lineNumber(), 6);
 }
@@ -104,12 +104,13 @@ TEST(InterferometerLine, unitMixUpsAreNamed) {
 }
 
 TEST(InterferometerSession, compensationOffCorrectsWithTheLatestAir) {
-    InterferometerSession session;
+    interferometer::InterferometerSession session;
     EXPECT_FALSE(session.feed(kOff));
     EXPECT_FALSE(session.feed("env,0,20,101325,50"));
     const auto first = session.feed("1,500,2.0");
     ASSERT_TRUE(first);
-    const double n1 = edlenRefractiveIndex(AirState{20, 101'325, 50});
+    const double n1 =
+        interferometer::edlenRefractiveIndex(interferometer::AirState{20, 101'325, 50});
     EXPECT_NEAR(first->position_mm, 500.0 / n1, 1e-12);
     EXPECT_NEAR(first->deviation_um, 2.0 + 500.0 * 1000.0 * (1.0 / n1 - 1.0), 1e-7);
     EXPECT_EQ(first->line, 3);
@@ -118,13 +119,14 @@ TEST(InterferometerSession, compensationOffCorrectsWithTheLatestAir) {
     EXPECT_FALSE(session.feed("env,2,22,99000,30"));
     const auto second = session.feed("3,500,2.0");
     ASSERT_TRUE(second);
-    const double n2 = edlenRefractiveIndex(AirState{22, 99'000, 30});
+    const double n2 =
+        interferometer::edlenRefractiveIndex(interferometer::AirState{22, 99'000, 30});
     EXPECT_NEAR(second->position_mm, 500.0 / n2, 1e-12);
     EXPECT_EQ(second->reading.position_mm, 500.0);
 }
 
 TEST(InterferometerSession, compensationOnKeepsTheReadingAndSaysSo) {
-    InterferometerSession session;
+    interferometer::InterferometerSession session;
     session.feed(kOn);
     session.feed("env,0,25,95000,60");  // recorded, not applied
     const auto r = session.feed("1,500,2.0");

@@ -35,16 +35,16 @@ struct Peer {
 };
 
 struct Read {
-    InterferometerStreamResult result;
-    std::vector<CorrectedReading> readings;
+    devices::InterferometerStreamResult result;
+    std::vector<interferometer::CorrectedReading> readings;
 };
 
 Read readFrom(const Peer& peer) {
     Read read;
-    InterferometerStreamOptions options;
+    devices::InterferometerStreamOptions options;
     options.port = peer.port;
-    read.result = readInterferometerStream(
-        options, [&](const CorrectedReading& r) { read.readings.push_back(r); });
+    read.result = devices::readInterferometerStream(
+        options, [&](const interferometer::CorrectedReading& r) { read.readings.push_back(r); });
     return read;
 }
 
@@ -68,15 +68,17 @@ TEST_F(InterferometerStreamTest, readsAndCorrectsACompleteStreamWithCompensation
 
     // The peer's lines, corrected with the air of the env line before each
     // (reference=vacuum: n0 = 1, so L_true = L_reading / n).
-    const double n1 = edlenRefractiveIndex(AirState{20.4, 100'800, 42.0});
-    const double n2 = edlenRefractiveIndex(AirState{20.6, 100'810, 42.5});
+    const double n1 =
+        interferometer::edlenRefractiveIndex(interferometer::AirState{20.4, 100'800, 42.0});
+    const double n2 =
+        interferometer::edlenRefractiveIndex(interferometer::AirState{20.6, 100'810, 42.5});
     const struct {
         int line;
         double position_mm, deviation_um, n;
     } expected[] = {
         {4, 0.0, 0.0, n1}, {5, 100.0, 1.25, n1}, {6, 200.0, 2.5, n1}, {8, 300.0, 3.75, n2}};
     for (std::size_t i = 0; i < 4; ++i) {
-        const CorrectedReading& r = read.readings[i];
+        const interferometer::CorrectedReading& r = read.readings[i];
         EXPECT_EQ(r.line, expected[i].line);
         EXPECT_EQ(r.reading.position_mm, expected[i].position_mm);
         EXPECT_NEAR(r.position_mm, expected[i].position_mm / expected[i].n, 1e-12);
@@ -137,9 +139,10 @@ TEST_F(InterferometerStreamTest, peerClosingMidStreamIsACleanErrorReadingsBefore
 TEST(InterferometerStream, nobodyListeningIsAConnectError) {
     // A port that was free a moment ago: bind 0 in the peer is not needed here,
     // a closed port on 127.0.0.1 refuses at once.
-    InterferometerStreamOptions options;
+    devices::InterferometerStreamOptions options;
     options.port = 1;  // privileged, never listened on by tests
-    const auto result = readInterferometerStream(options, [](const CorrectedReading&) {});
+    const auto result =
+        devices::readInterferometerStream(options, [](const interferometer::CorrectedReading&) {});
     EXPECT_FALSE(result.complete);
     EXPECT_TRUE(
         result.error.startsWith(QStringLiteral("cannot connect to the interferometer at "

@@ -303,8 +303,8 @@ TEST(Iso230_3BadInput, settingsRefused) {
 }
 
 TEST(Iso230_3Example, movingRunS1AndSpindleRunSP1) {
-    const BundleReadResult read =
-        readBundle(QStringLiteral(DRIFTLAB_SOURCE_DIR "/resources/examples/x-axis-moving-state"));
+    const bundle::BundleReadResult read = bundle::readBundle(
+        QStringLiteral(DRIFTLAB_SOURCE_DIR "/resources/examples/x-axis-moving-state"));
     ASSERT_TRUE(read.ok());
     const Campaign& c = *read.campaign;
     const AxisDriftEvaluation s1 = evaluateAxisDrift(*c.findRun(QStringLiteral("S1")));

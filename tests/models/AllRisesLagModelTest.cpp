@@ -15,9 +15,9 @@
 
 #include "core/models/AllRisesLagModel.h"
 #include "core/models/ModelScore.h"
-#include "tests/models/LeastSquaresBaselines.h"
 #include "tests/models/ModelTestSupport.h"
 #include "tests/models/SpindleTestCampaigns.h"
+#include "tests/support/LeastSquaresBaselines.h"
 
 namespace driftlab::models {
 namespace {

@@ -18,8 +18,8 @@
 #include <string>
 
 #include "core/bundle/BundleReader.h"
-#include "tests/models/LeastSquaresBaselines.h"
 #include "tests/models/ValidationRecord.h"
+#include "tests/support/LeastSquaresBaselines.h"
 
 namespace driftlab::models {
 namespace {
@@ -87,7 +87,7 @@ class IndependentSpindle : public testing::TestWithParam<std::string> {};
 TEST_P(IndependentSpindle, autoAgainstLeastSquaresOnAllSixteenRisesAndTheBestPair) {
     const QString name = QString::fromStdString(GetParam());
     const QDir suite = spindleSuite();
-    const BundleReadResult read = readBundle(suite.filePath(name));
+    const bundle::BundleReadResult read = bundle::readBundle(suite.filePath(name));
     ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
     const Campaign& c = *read.campaign;
     const TruthDrift truth =

@@ -13,8 +13,8 @@
 #include "core/bundle/BundleReader.h"
 #include "core/models/AutoModel.h"
 #include "core/models/ModelValidation.h"
-#include "tests/models/LeastSquaresBaselines.h"
 #include "tests/models/ValidationRecord.h"
+#include "tests/support/LeastSquaresBaselines.h"
 
 using namespace driftlab;
 
@@ -22,7 +22,8 @@ namespace {
 
 const Campaign& flThermal() {
     static const Campaign campaign = [] {
-        const BundleReadResult read = readBundle(QStringLiteral(DRIFTLAB_FL_THERMAL_BUNDLE));
+        const bundle::BundleReadResult read =
+            bundle::readBundle(QStringLiteral(DRIFTLAB_FL_THERMAL_BUNDLE));
         EXPECT_TRUE(read.ok()) << "written by the ctest fixture fl_thermal_bundle_generate: "
                                << (read.ok() ? "" : qPrintable(read.error->toString()));
         return read.ok() ? *read.campaign : Campaign{};

@@ -17,9 +17,9 @@
 #include "core/models/ModelScore.h"
 #include "core/models/PrincipalRisesHeatModel.h"
 #include "core/models/RidgeHeatModel.h"
-#include "tests/models/LeastSquaresBaselines.h"
 #include "tests/models/ModelTestSupport.h"
 #include "tests/models/SpindleTestCampaigns.h"
+#include "tests/support/LeastSquaresBaselines.h"
 
 namespace driftlab::models {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "core/bundle/BundleReader.h"
 #include "core/models/TrainingEnvelope.h"
-#include "tests/cli/CliRunner.h"
+#include "tests/support/CliRunner.h"
 
 namespace driftlab::models {
 namespace {
@@ -104,7 +104,7 @@ TEST(TrainingEnvelope, aSpindleSpeedBeyondTheTrainingSpeedsIsAnExtrapolation) {
 }
 
 TEST(TrainingEnvelope, namesTheRoomWhereHeldOutRunsCooledAndEveryTrainingRunWarmed) {
-    const BundleReadResult read = readBundle(roomCampaign());
+    const bundle::BundleReadResult read = bundle::readBundle(roomCampaign());
     ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
     DatasetOptions options;
     options.target_channel = QStringLiteral("Z1");

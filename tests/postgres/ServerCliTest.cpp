@@ -15,9 +15,9 @@
 #include "core/bundle/BundleReader.h"
 #include "db/CampaignStore.h"
 #include "db/ModelFitStore.h"
-#include "tests/cli/CliRunner.h"
-#include "tests/core/BundleTestSupport.h"
 #include "tests/postgres/PgTestServer.h"
+#include "tests/support/BundleTestSupport.h"
+#include "tests/support/CliRunner.h"
 
 using namespace driftlab;
 using namespace driftlab::test;
@@ -79,7 +79,8 @@ TEST(ServerCli, importInfoExportAndFitWorkOnAServerStore) {
     const QString out = dir.filePath(QStringLiteral("exported"));
     const CliResult exported = runCli({"export", "--db", url, "--campaign", id, "--out", out});
     ASSERT_EQ(exported.exitCode, 0) << exported.err.constData();
-    const BundleReadResult original = readBundle(bundle), back = readBundle(out);
+    const bundle::BundleReadResult original = bundle::readBundle(bundle),
+                                   back = bundle::readBundle(out);
     ASSERT_TRUE(back.ok()) << qPrintable(back.error->toString());
     EXPECT_EQ(*back.campaign, *original.campaign);
 

@@ -12,8 +12,8 @@
 #include "db/SchemaMigrations.h"
 #include "db/StoreBackend.h"
 #include "db/ZipBundleSource.h"
-#include "tests/core/BundleTestSupport.h"
 #include "tests/postgres/PgTestServer.h"
+#include "tests/support/BundleTestSupport.h"
 
 using namespace driftlab;
 using namespace driftlab::test;

@@ -103,8 +103,8 @@ TEST(CampaignSimulator, fiveMovingStatesGiveThePublishedMagnitudesAndAValidBundl
     EXPECT_GT(s3.at({12, 695.0}), 1.5 * s2.at({12, 695.0}));
 
     QTemporaryDir dir;
-    ASSERT_FALSE(writeBundle(campaign, dir.path()).has_value());
-    const BundleReadResult back = readBundle(dir.path());
+    ASSERT_FALSE(bundle::writeBundle(campaign, dir.path()).has_value());
+    const bundle::BundleReadResult back = bundle::readBundle(dir.path());
     ASSERT_TRUE(back.ok()) << qPrintable(back.error->toString());
     EXPECT_EQ(*back.campaign, campaign);
 }

@@ -64,8 +64,8 @@ TEST(SensorHealth, otherNoiseSeedsAndDropoutsRaiseNoFlagEither) {
 }
 
 TEST(SensorHealth, cleanExampleBundleRaisesNoFlag) {
-    const auto read =
-        readBundle(QStringLiteral(DRIFTLAB_SOURCE_DIR "/resources/examples/x-axis-moving-state"));
+    const auto read = bundle::readBundle(
+        QStringLiteral(DRIFTLAB_SOURCE_DIR "/resources/examples/x-axis-moving-state"));
     ASSERT_TRUE(read.campaign.has_value());
     std::size_t checkedRows = 0;
     for (const driftlab::Run& run : read.campaign->runs) {

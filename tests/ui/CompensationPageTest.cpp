@@ -17,9 +17,9 @@
 
 #include "core/compensation/TableExport.h"
 #include "tests/ui/UiTestSupport.h"
-#include "ui/app/Session.h"
 #include "ui/models/CompensationTableModel.h"
 #include "ui/pages/CompensationPage.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/TableExportPanel.h"
 
 using namespace driftlab;
@@ -36,7 +36,6 @@ struct Fixture {
     std::unique_ptr<ui::CompensationPage> page;
 
     Fixture() {
-        testApplication();
         db = importExample(dir, &campaign);
         QString error;
         EXPECT_TRUE(session.openStore(db, false, &error)) << qPrintable(error);

@@ -17,10 +17,10 @@
 
 #include "acquisition/sim/SimulatedController.h"
 #include "tests/ui/UiTestSupport.h"
-#include "ui/app/Session.h"
 #include "ui/models/CompensationTableModel.h"
 #include "ui/models/PushHistoryModel.h"
 #include "ui/pages/CompensationPage.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/ControllerPanel.h"
 #include "ui/widgets/PushConfirmDialog.h"
 
@@ -34,14 +34,13 @@ struct PushFixture {
     qint64 campaign = 0;
     ui::Session session;
     std::unique_ptr<ui::CompensationPage> page;
-    std::unique_ptr<push::SimulatedController> controller;
+    std::unique_ptr<sim::SimulatedController> controller;
     ui::ControllerPanel* panel = nullptr;
 
-    explicit PushFixture(push::ControllerFaults faults = {}) {
-        testApplication();
-        push::SimulatedControllerOptions options;
+    explicit PushFixture(sim::ControllerFaults faults = {}) {
+        sim::SimulatedControllerOptions options;
         options.faults = faults;
-        controller = std::make_unique<push::SimulatedController>(options);
+        controller = std::make_unique<sim::SimulatedController>(options);
         QString error;
         EXPECT_TRUE(controller->start(&error)) << qPrintable(error);
         EXPECT_TRUE(session.openStore(importExample(dir, &campaign), false, &error))
@@ -124,7 +123,7 @@ TEST(CompensationPush, confirmedPushIsAppliedReadBackAndRecorded) {
 }
 
 TEST(CompensationPush, aControllerThatRefusesKeepsItsTableAndTheRefusalIsShownAndRecorded) {
-    push::ControllerFaults faults;
+    sim::ControllerFaults faults;
     faults.refuse_commit = true;
     PushFixture f(faults);
     f.openConfirmation();

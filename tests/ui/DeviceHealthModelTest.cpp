@@ -11,7 +11,6 @@ using namespace driftlab;
 using ui::DeviceHealth;
 
 TEST(DeviceHealthModel, errorMakesADeviceLostAndItsGapBringsItBack) {
-    uitest::app();
     ui::DeviceHealthModel model;
     QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::Fatal);
     model.reset({QStringLiteral("temperature module 10.0.0.5:502"),
@@ -34,7 +33,6 @@ TEST(DeviceHealthModel, errorMakesADeviceLostAndItsGapBringsItBack) {
 }
 
 TEST(DeviceHealthModel, anUnknownDeviceIsAddedButEngineNotesAreNot) {
-    uitest::app();
     ui::DeviceHealthModel model;
     QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::Fatal);
     model.reset({QStringLiteral("simulated rig")});

@@ -7,11 +7,11 @@
 
 #include "ModelsTestSupport.h"
 #include "db/DiagnosisStore.h"
-#include "ui/app/MainWindow.h"
-#include "ui/app/Session.h"
 #include "ui/models/FindingsModel.h"
 #include "ui/models/StoredDiagnosesModel.h"
 #include "ui/pages/DiagnosisPage.h"
+#include "ui/shell/MainWindow.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/PlotView.h"
 
 using namespace driftlab;

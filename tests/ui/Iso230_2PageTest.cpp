@@ -12,9 +12,9 @@
 #include <cmath>
 
 #include "tests/ui/UiTestSupport.h"
-#include "ui/app/Session.h"
 #include "ui/models/Iso230_2TargetModel.h"
 #include "ui/pages/Iso230_2Page.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/Iso230_2Plot.h"
 
 using namespace driftlab;
@@ -47,7 +47,6 @@ void expectSameNumber(const QVariant& page, const QJsonValue& cli, const char* w
 }  // namespace
 
 TEST(Iso230_2Page, figuresAndTargetsEqualTheCliJsonForTheSameRun) {
-    testApplication();
     QTemporaryDir dir;
     qint64 campaign = 0;
     const QString db = importExample(dir, &campaign);
@@ -95,7 +94,6 @@ TEST(Iso230_2Page, figuresAndTargetsEqualTheCliJsonForTheSameRun) {
 }
 
 TEST(Iso230_2Page, aCampaignWithoutPositioningReadingsIsNamed) {
-    testApplication();
     QTemporaryDir dir;
     ui::Session session;
     QString error;

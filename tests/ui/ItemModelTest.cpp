@@ -5,9 +5,9 @@
 #include <QAbstractItemModelTester>
 #include <QTemporaryDir>
 
-#include "../cli/CliRunner.h"
 #include "db/CampaignStore.h"
 #include "db/StoreOverview.h"
+#include "tests/support/CliRunner.h"
 #include "tests/ui/UiTestSupport.h"
 #include "ui/models/CampaignTreeModel.h"
 #include "ui/models/ChannelSetupModel.h"

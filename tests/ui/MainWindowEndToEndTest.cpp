@@ -16,21 +16,20 @@
 #include "db/DiagnosisStore.h"
 #include "db/ModelFitStore.h"
 #include "tests/ui/UiTestSupport.h"
-#include "ui/app/BackgroundJob.h"
-#include "ui/app/MainWindow.h"
-#include "ui/app/RunController.h"
-#include "ui/app/Session.h"
 #include "ui/pages/CompensationPage.h"
 #include "ui/pages/DiagnosisPage.h"
 #include "ui/pages/ModelsPage.h"
 #include "ui/pages/RunPage.h"
 #include "ui/pages/SetupPage.h"
+#include "ui/shell/BackgroundJob.h"
+#include "ui/shell/MainWindow.h"
+#include "ui/shell/RunController.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/TableExportPanel.h"
 
 using namespace driftlab;
 
 TEST(MainWindowEndToEnd, setUpRunFitDiagnoseAndExportATable) {
-    test::testApplication();
     QTemporaryDir dir;
     ui::MainWindow window;
     window.show();

@@ -107,9 +107,3 @@ TEST(ModelsItemModels, findingsAndStoredDiagnosesModelsPassTheTester) {
     EXPECT_EQ(stored.index(1, ui::StoredDiagnosesModel::AdoptedFit).data().toString(),
               QStringLiteral("3"));
 }
-
-int main(int argc, char** argv) {
-    ::testing::InitGoogleTest(&argc, argv);
-    ::testing::AddGlobalTestEnvironment(new driftlab::test::QtApplicationEnvironment);
-    return RUN_ALL_TESTS();
-}

@@ -1,7 +1,6 @@
 #pragma once
-// Shared by the Models and Diagnosis page tests: a QApplication for the whole
-// test program, stores made by the real CLI (simulate + import), and waiting
-// for a page's background job.
+// Shared by the Models and Diagnosis page tests: stores made by the real CLI (simulate + import),
+// and waiting for a page's background job.
 #include <gtest/gtest.h>
 
 #include <QApplication>
@@ -10,9 +9,9 @@
 #include <QTest>
 #include <QWidget>
 
-#include "../cli/CliRunner.h"
 #include "db/ModelFitStore.h"
-#include "ui/app/BackgroundJob.h"
+#include "tests/support/CliRunner.h"
+#include "ui/shell/BackgroundJob.h"
 
 namespace driftlab::test {
 
@@ -61,19 +60,5 @@ inline void saveScreenshot(QWidget& window, const QString& name) {
     EXPECT_EQ(window.width(), 1280) << "the window grew: a widget wants more room";
     EXPECT_TRUE(window.grab().save(QString::fromLocal8Bit(dir) + QLatin1Char('/') + name));
 }
-
-class QtApplicationEnvironment : public ::testing::Environment {
-public:
-    void SetUp() override {
-        static int argc = 1;
-        static char name[] = "ui_models_tests";
-        static char* argv[] = {name, nullptr};
-        app_ = std::make_unique<QApplication>(argc, argv);
-    }
-    void TearDown() override { app_.reset(); }
-
-private:
-    std::unique_ptr<QApplication> app_;
-};
 
 }  // namespace driftlab::test

@@ -11,16 +11,15 @@
 #include <QTest>
 
 #include "tests/ui/UiTestSupport.h"
-#include "ui/app/MainWindow.h"
-#include "ui/app/ReportExport.h"
-#include "ui/app/Session.h"
+#include "ui/shell/MainWindow.h"
+#include "ui/shell/ReportExport.h"
+#include "ui/shell/Session.h"
 
 using namespace driftlab;
 
 namespace {
 
 std::unique_ptr<ui::MainWindow> windowOnExample(const QTemporaryDir& dir) {
-    test::testApplication();
     qint64 id = 0;
     const QString store = test::importExample(dir, &id);
     auto window = std::make_unique<ui::MainWindow>();
@@ -49,10 +48,7 @@ TEST(ReportExport, writesThePdfOfTheSelectedCampaign) {
     QFile file(pdf);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     EXPECT_TRUE(file.read(5) == "%PDF-");
-    QProcess text;
-    text.start(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
-    ASSERT_TRUE(text.waitForFinished(60'000));
-    const QString content = QString::fromUtf8(text.readAllStandardOutput());
+    const QString content = test::pdfText(pdf);
     QString error;
     const auto campaign = window->session().loadCampaign(&error);
     ASSERT_TRUE(campaign);
@@ -101,7 +97,6 @@ TEST(ReportExport, cancelWhileThePagesAreDrawnLeavesNoFile) {
 
 TEST(ReportExport, needsASelectedCampaign) {
     QTemporaryDir dir;
-    test::testApplication();
     ui::MainWindow window;
     auto* action = window.findChild<QAction*>(QStringLiteral("ExportReportAction"));
     ASSERT_TRUE(action);

@@ -9,17 +9,16 @@
 #include <QTest>
 
 #include "tests/ui/RunTestSupport.h"
-#include "ui/app/MainWindow.h"
-#include "ui/app/RunController.h"
-#include "ui/app/Session.h"
 #include "ui/pages/RunPage.h"
+#include "ui/shell/MainWindow.h"
+#include "ui/shell/RunController.h"
+#include "ui/shell/Session.h"
 
 using namespace driftlab;
 
 TEST(RunPageScreenshot, duringAnIso230_3Run) {
     const QString out = qEnvironmentVariable("DRIFTLAB_SCREENSHOT_DIR");
     if (out.isEmpty()) GTEST_SKIP() << "DRIFTLAB_SCREENSHOT_DIR not set";
-    uitest::app();
     QTemporaryDir dir;
     ui::MainWindow window;
     QString error;

@@ -19,9 +19,9 @@
 #include "core/procedures/ProcedurePlan.h"
 #include "tests/acquisition/DevicePeer.h"
 #include "tests/ui/RunTestSupport.h"
-#include "ui/app/RunController.h"
-#include "ui/app/Session.h"
 #include "ui/pages/RunPage.h"
+#include "ui/shell/RunController.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/PreRunChecklist.h"
 
 using namespace driftlab;
@@ -35,7 +35,6 @@ struct RunFixture {
     QString store = dir.filePath(QStringLiteral("lab.sqlite"));
 
     explicit RunFixture(double speedup) {
-        uitest::app();
         QString error;
         EXPECT_TRUE(session.openStore(store, true, &error)) << error.toStdString();
         ui::RunSetup setup;

@@ -1,5 +1,5 @@
 #pragma once
-// What the GUI tests share: one QApplication for the process (offscreen), a
+// What the Run page tests share: a
 // short simulated procedure, and the run statuses of a store as logged.
 
 #include <QApplication>
@@ -7,14 +7,6 @@
 #include "tests/acquisition/LoggedRunSupport.h"
 
 namespace driftlab::uitest {
-
-inline QApplication& app() {
-    static int argc = 1;
-    static char name[] = "ui_run_tests";
-    static char* argv[] = {name, nullptr};
-    static QApplication* instance = new QApplication(argc, argv);
-    return *instance;
-}
 
 using test::runStatuses;
 using test::twoShortMovingStates;

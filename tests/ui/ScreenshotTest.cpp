@@ -15,10 +15,10 @@
 
 #include "acquisition/sim/SimulatedController.h"
 #include "tests/ui/UiTestSupport.h"
-#include "ui/app/MainWindow.h"
-#include "ui/app/Session.h"
 #include "ui/pages/CompensationPage.h"
 #include "ui/pages/Iso230_2Page.h"
+#include "ui/shell/MainWindow.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/ControllerPanel.h"
 #include "ui/widgets/PushConfirmDialog.h"
 
@@ -30,11 +30,10 @@ using namespace driftlab::test;
 TEST(Screenshots, compensationAndIso230_2PagesWithData) {
     const QString out = qEnvironmentVariable("DRIFTLAB_SCREENSHOT_DIR");
     if (out.isEmpty()) GTEST_SKIP() << "set DRIFTLAB_SCREENSHOT_DIR to take the screenshots";
-    testApplication();
     QTemporaryDir dir;
     qint64 campaign = 0;
     const QString db = importExample(dir, &campaign);
-    push::SimulatedController controller;
+    sim::SimulatedController controller;
     QString error;
     ASSERT_TRUE(controller.start(&error)) << qPrintable(error);
 

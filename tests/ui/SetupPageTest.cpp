@@ -17,9 +17,9 @@
 
 #include "core/bundle/CampaignJson.h"
 #include "tests/ui/UiTestSupport.h"
-#include "ui/app/Session.h"
 #include "ui/models/ChannelSetupModel.h"
 #include "ui/pages/SetupPage.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/MachineForm.h"
 #include "ui/widgets/ProcedureForm.h"
 #include "ui/widgets/RigForm.h"
@@ -142,7 +142,7 @@ TEST_F(SetupPageTest, theMachineSetupRoundTripsThroughCampaignJson) {
     // What `driftlab-cli run --machine` reads: the same parser.
     QFile file(path);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-    const Campaign parsed = campaignFromJson(file.readAll(), path);
+    const Campaign parsed = bundle::campaignFromJson(file.readAll(), path);
     EXPECT_TRUE(parsed.runs.empty());
     EXPECT_EQ(parsed.machine.controller, QStringLiteral("LinuxCNC 2.9"));
 

@@ -11,10 +11,10 @@
 #include <QTabWidget>
 #include <QTest>
 
-#include "../cli/CliRunner.h"
-#include "ui/app/MainWindow.h"
-#include "ui/app/Session.h"
+#include "tests/support/CliRunner.h"
 #include "ui/pages/SetupPage.h"
+#include "ui/shell/MainWindow.h"
+#include "ui/shell/Session.h"
 
 namespace driftlab::ui {
 namespace {

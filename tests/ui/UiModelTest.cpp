@@ -31,7 +31,6 @@ iso::Evaluation fiveTargets() {
 }  // namespace
 
 TEST(UiModels, compensationTableModelKeepsTheContractThroughSetActiveAndClear) {
-    test::testApplication();
     ui::CompensationTableModel model;
     Tester tester(&model, Tester::FailureReportingMode::Fatal);
     compensation::TableSettings settings;
@@ -60,7 +59,6 @@ TEST(UiModels, compensationTableModelKeepsTheContractThroughSetActiveAndClear) {
 }
 
 TEST(UiModels, iso230_2TargetModelShowsNotDeterminedAsNa) {
-    test::testApplication();
     ui::Iso230_2TargetModel model;
     Tester tester(&model, Tester::FailureReportingMode::Fatal);
     const iso::Evaluation e = fiveTargets();
@@ -78,7 +76,6 @@ TEST(UiModels, iso230_2TargetModelShowsNotDeterminedAsNa) {
 }
 
 TEST(UiModels, pushHistoryModelShowsTheNewestPushFirst) {
-    test::testApplication();
     ui::PushHistoryModel model;
     Tester tester(&model, Tester::FailureReportingMode::Fatal);
     db::PushRecord first, second;

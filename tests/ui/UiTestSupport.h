@@ -1,7 +1,7 @@
 #pragma once
-// What the GUI tests share: one QApplication for the test binary (with
-// QSettings redirected to a temporary folder, so no test touches the user's
-// settings), a store made with the real CLI, and waiting for a signal.
+// What the GUI tests share: a store made with the real CLI, a channel of the
+// set-up tables, and waiting for a signal. The QApplication is made by the
+// tests' main (tests/support/QtTestMain.cpp).
 #include <gtest/gtest.h>
 
 #include <QApplication>
@@ -10,24 +10,10 @@
 #include <QTemporaryDir>
 
 #include "core/domain/Channel.h"
-#include "tests/cli/CliRunner.h"
+#include "tests/support/CliRunner.h"
+#include "tests/support/SignalWait.h"
 
 namespace driftlab::test {
-
-inline QApplication& testApplication() {
-    static int argc = 1;
-    static char name[] = "ui_compensation_tests";
-    static char* argv[] = {name, nullptr};
-    static QTemporaryDir settingsDir;
-    static QApplication* app = [] {
-        QCoreApplication::setOrganizationName(QStringLiteral("DriftLabTests"));
-        QCoreApplication::setApplicationName(QStringLiteral("ui_compensation_tests"));
-        QSettings::setDefaultFormat(QSettings::IniFormat);
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
-        return new QApplication(argc, argv);
-    }();
-    return *app;
-}
 
 /// The example campaign (resources/examples/x-axis-moving-state, run S1 with
 /// positioning readings) imported with `driftlab-cli import` into dir/store.sqlite.
@@ -48,14 +34,6 @@ inline Channel channel(const char* id, Quantity quantity, ChannelRole role) {
     c.quantity = quantity;
     c.role = role;
     return c;
-}
-
-/// Waits (event loop running) until `spy` has at least `count` signals; a
-/// generous bound only so that a hang fails instead of blocking the suite.
-inline bool waitFor(QSignalSpy& spy, int count = 1) {
-    while (spy.count() < count)
-        if (!spy.wait(60'000)) return false;
-    return true;
 }
 
 }  // namespace driftlab::test

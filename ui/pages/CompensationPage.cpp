@@ -16,9 +16,9 @@
 
 #include "core/iso/Iso230_2.h"
 #include "core/iso/PositioningRuns.h"
-#include "ui/app/SelectedCampaignLoader.h"
-#include "ui/app/Session.h"
 #include "ui/models/CompensationTableModel.h"
+#include "ui/shell/SelectedCampaignLoader.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/CompensationPlot.h"
 #include "ui/widgets/ControllerPanel.h"
 #include "ui/widgets/TableExportPanel.h"

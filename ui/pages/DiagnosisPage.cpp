@@ -14,12 +14,12 @@
 #include <cmath>
 
 #include "db/DiagnosisRecords.h"
-#include "ui/app/BackgroundJob.h"
-#include "ui/app/DiagnosisJob.h"
-#include "ui/app/Session.h"
 #include "ui/models/FindingsModel.h"
 #include "ui/models/StoredDiagnosesModel.h"
 #include "ui/plots/DiagnosisPlots.h"
+#include "ui/shell/BackgroundJob.h"
+#include "ui/shell/DiagnosisJob.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/PlotView.h"
 #include "ui/widgets/ResultTableView.h"
 

@@ -13,9 +13,9 @@
 #include <cmath>
 
 #include "core/iso/PositioningRuns.h"
-#include "ui/app/SelectedCampaignLoader.h"
-#include "ui/app/Session.h"
 #include "ui/models/Iso230_2TargetModel.h"
+#include "ui/shell/SelectedCampaignLoader.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/Iso230_2Plot.h"
 
 namespace driftlab::ui {

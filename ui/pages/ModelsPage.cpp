@@ -13,12 +13,12 @@
 #include <QVBoxLayout>
 #include <cmath>
 
-#include "ui/app/BackgroundJob.h"
-#include "ui/app/FitJob.h"
-#include "ui/app/Session.h"
 #include "ui/models/CrossStateMatrixModel.h"
 #include "ui/models/ModelParametersModel.h"
 #include "ui/models/TestScoresModel.h"
+#include "ui/shell/BackgroundJob.h"
+#include "ui/shell/FitJob.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/FitSetupPanel.h"
 #include "ui/widgets/PredictionPlotWidget.h"
 #include "ui/widgets/ResultTableView.h"

@@ -9,8 +9,8 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include "ui/app/RunController.h"
-#include "ui/app/Session.h"
+#include "ui/shell/RunController.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/LiveDashboard.h"
 #include "ui/widgets/PreRunChecklist.h"
 #include "ui/widgets/RunStatusWidget.h"

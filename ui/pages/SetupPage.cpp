@@ -14,8 +14,8 @@
 #include <set>
 
 #include "core/procedures/ProcedurePlan.h"
-#include "ui/app/Session.h"
 #include "ui/models/ChannelSetupModel.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/ChannelTable.h"
 #include "ui/widgets/MachineForm.h"
 #include "ui/widgets/ProcedureForm.h"

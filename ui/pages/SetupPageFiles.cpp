@@ -9,8 +9,8 @@
 #include "core/bundle/CampaignJson.h"
 #include "core/procedures/ProcedurePlan.h"
 #include "core/rig/CampaignSimulator.h"
-#include "ui/app/Session.h"
 #include "ui/pages/SetupPage.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/ProcedureForm.h"
 #include "ui/widgets/ProcedureKeyNumbers.h"
 #include "ui/widgets/RigForm.h"
@@ -38,7 +38,7 @@ bool SetupPage::loadMachine(const QString& path, QString* error) {
         return false;
     }
     try {
-        Campaign campaign = campaignFromJson(file.readAll(), path);
+        Campaign campaign = bundle::campaignFromJson(file.readAll(), path);
         if (!campaign.runs.empty())
             emit m_session.event(QStringLiteral("info"), QStringLiteral("set-up"),
                                  tr("%1: its %2 run(s) are not part of a machine set-up and were "
@@ -46,7 +46,7 @@ bool SetupPage::loadMachine(const QString& path, QString* error) {
                                      .arg(path)
                                      .arg(campaign.runs.size()));
         setMachine(campaign);
-    } catch (const BundleException& e) {
+    } catch (const bundle::BundleException& e) {
         *error = e.error.toString();
         return false;
     }
@@ -60,7 +60,7 @@ bool SetupPage::loadMachine(const QString& path, QString* error) {
 bool SetupPage::saveMachine(const QString& path, QString* error) {
     QSaveFile file(path);
     const QByteArray json =
-        QJsonDocument(campaignToJson(machine())).toJson(QJsonDocument::Indented);
+        QJsonDocument(bundle::campaignToJson(machine())).toJson(QJsonDocument::Indented);
     if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size() || !file.commit()) {
         *error = tr("%1: %2").arg(path, file.errorString());
         return false;

@@ -14,7 +14,7 @@ class ScrewStateRecorder {
 public:
     /// Thermal-error curves every `curve_interval_s`, between `from_mm` and `to_mm`.
     ScrewStateRecorder(double curve_interval_s, double from_mm, double to_mm)
-        : curveInterval_s_(curve_interval_s), from_mm_(from_mm), to_mm_(to_mm) {}
+        : m_curveInterval_s(curve_interval_s), m_from_mm(from_mm), m_to_mm(to_mm) {}
 
     /// Called at every logged sample.
     void record(const physics::ScrewThermalModel& screw);
@@ -25,17 +25,17 @@ public:
     bool saveThermalErrorCurves(const QString& path, const QString& title, QString* error) const;
 
 private:
-    double curveInterval_s_, from_mm_, to_mm_;
-    double nextCurve_s_ = 0;
-    double initial_C_ = 0;
-    std::vector<double> cellAxis_mm_;
-    std::vector<double> time_h_;
-    std::vector<double> rise_K_;  ///< row per time, column per cell
+    double m_curveInterval_s, m_from_mm, m_to_mm;
+    double m_nextCurve_s = 0;
+    double m_initial_C = 0;
+    std::vector<double> m_cellAxis_mm;
+    std::vector<double> m_time_h;
+    std::vector<double> m_rise_K;  ///< row per time, column per cell
     struct ErrorCurve {
         double time_h;
         std::vector<double> position_mm, error_um;
     };
-    std::vector<ErrorCurve> curves_;
+    std::vector<ErrorCurve> m_curves;
 };
 
 }  // namespace driftlab::ui

@@ -16,8 +16,8 @@
 
 #include "acquisition/push/PushRecording.h"
 #include "acquisition/push/TablePush.h"
-#include "ui/app/Session.h"
 #include "ui/models/PushHistoryModel.h"
+#include "ui/shell/Session.h"
 #include "ui/widgets/CampaignLoad.h"
 #include "ui/widgets/PushConfirmDialog.h"
 

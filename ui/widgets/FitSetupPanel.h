@@ -5,7 +5,7 @@
 
 #include <QWidget>
 
-#include "ui/app/FitJob.h"
+#include "ui/shell/FitJob.h"
 
 class QComboBox;
 class QListWidget;

@@ -6,8 +6,8 @@
 #include <QtConcurrent>
 
 #include "core/procedures/ProcedurePlan.h"
-#include "ui/app/RunController.h"
-#include "ui/app/Session.h"
+#include "ui/shell/RunController.h"
+#include "ui/shell/Session.h"
 
 namespace driftlab::ui {
 namespace {

@@ -6,8 +6,8 @@
 #include <QWidget>
 #include <vector>
 
-#include "ui/app/FitJob.h"
 #include "ui/plots/PngPlots.h"
+#include "ui/shell/FitJob.h"
 
 class QComboBox;
 

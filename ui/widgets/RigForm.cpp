@@ -18,7 +18,7 @@
 
 #include "acquisition/modbus/ModbusUrl.h"
 #include "core/rig/RigEffects.h"
-#include "ui/app/Session.h"
+#include "ui/shell/Session.h"
 
 namespace driftlab::ui {
 namespace {

@@ -1,12 +1,13 @@
 #pragma once
-// Dynamic (ARX-style) regression of the thermal error on temperature rises:
+// `arx`: the thermal error regressed on a few chosen temperature rises (no
+// autoregressive terms, despite the id, which scripts keep using):
 // each chosen sensor enters with its current rise and with its rise passed
 // through a first-order lag whose time constant is fitted,
 //   drift channel:     E(t)   = Σ_j [a_j·ΔT_j(t) + g_j·L_τj[ΔT_j](t)] (+ c)
 //   positioning error: E(x,t) = Σ_j [ΔT_j·(a_j + b_j·dx) + L_τj[ΔT_j]·(g_j + h_j·dx)]
 // with dx = x − x_fixed. A drift channel's fit gives each training run its own
 // zero; a prediction takes none, or their mean c where cross-validation finds
-// an offset the runs share (DynamicRegressionSearch.h). Drift that lags every sensor (the shaft and
+// an offset the runs share (LaggedSensorsSearch.h). Drift that lags every sensor (the shaft and
 // the column core carry no sensor) shows as hysteresis against the current temperatures; a lagged
 // input follows it. The sensors and their time constants are chosen by cross-validation over the
 // training runs (leave one run out; time blocks for a single run), as the ETH Zürich group's ARX
@@ -19,7 +20,7 @@
 
 namespace driftlab::models {
 
-struct DynamicRegressionOptions {
+struct LaggedSensorsOptions {
     int max_sensors = 3;
     double min_tau_s = 60;
     double max_tau_s = 8 * 3600;
@@ -31,9 +32,9 @@ struct DynamicRegressionOptions {
     int search_rows_per_run = 400;
 };
 
-class DynamicRegressionModel final : public ThermalErrorModel {
+class LaggedSensorsModel final : public ThermalErrorModel {
 public:
-    explicit DynamicRegressionModel(DynamicRegressionOptions options = {});
+    explicit LaggedSensorsModel(LaggedSensorsOptions options = {});
     QString name() const override { return QStringLiteral("arx"); }
     QString describe() const override;
 
@@ -51,12 +52,12 @@ private:
     /// [ΔT_j, L_τj[ΔT_j]] of every chosen input at the points.
     Eigen::MatrixXd features(const RunData& run, const std::vector<PredictionPoint>& at) const;
 
-    DynamicRegressionOptions options_;
-    std::vector<Input> inputs_;
-    Eigen::VectorXd coefficients_;
+    LaggedSensorsOptions m_options;
+    std::vector<Input> m_inputs;
+    Eigen::VectorXd m_coefficients;
     /// A drift channel's offset at prediction: the training runs' mean zero,
     /// where cross-validation preferred it to none (µm).
-    double commonZero_um_ = 0;
+    double m_commonZero_um = 0;
 };
 
 }  // namespace driftlab::models

@@ -1,4 +1,4 @@
-#include "ui/app/Session.h"
+#include "ui/shell/Session.h"
 
 #include <QFileInfo>
 

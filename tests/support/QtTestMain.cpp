@@ -1,12 +1,14 @@
-// The GUI tests' main: a QApplication, and settings and app data in a
-// temporary folder so a test never reads or changes the user's.
+// The main of every test that needs Qt's event loop (GUI pages, device
+// workers, queued signals): one QApplication for the whole test binary,
+// offscreen unless told otherwise, with settings and app data in a temporary
+// folder so that a test never reads or changes the user's.
 #include <gtest/gtest.h>
 
 #include <QApplication>
 #include <QTemporaryDir>
 
 int main(int argc, char** argv) {
-    // Offscreen unless told otherwise (test discovery runs without the ctest environment).
+    // Test discovery runs the binary without the ctest environment.
     if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QTemporaryDir home;
     qputenv("XDG_CONFIG_HOME", home.filePath(QStringLiteral("config")).toUtf8());

@@ -1,4 +1,4 @@
-#include "core/models/DynamicRegressionSearch.h"
+#include "core/models/LaggedSensorsSearch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -196,16 +196,16 @@ SetScore crossValidatedWithRunZeros(const Eigen::MatrixXd& F, const Eigen::Vecto
 }
 
 InputSearch::InputSearch(const std::vector<RunData>& training, const QStringList& candidates,
-                         const DynamicRegressionOptions& options)
-    : positionDependent_(training.front().positionDependent()) {
+                         const LaggedSensorsOptions& options)
+    : m_positionDependent(training.front().positionDependent()) {
     const double lo = std::log(options.min_tau_s), hi = std::log(options.max_tau_s);
     for (int g = 0; g < options.grid_points; ++g)
-        grid_.push_back(std::exp(lo + (hi - lo) * g / (options.grid_points - 1)));
+        m_grid.push_back(std::exp(lo + (hi - lo) * g / (options.grid_points - 1)));
     const std::vector<int> allFolds = crossValidationFolds(training, options.time_blocks);
     std::size_t offset = 0;
     int runIndex = 0;
     std::vector<Eigen::VectorXd> raw(std::size_t(candidates.size())),
-        lagged(std::size_t(candidates.size()) * grid_.size());
+        lagged(std::size_t(candidates.size()) * m_grid.size());
     std::vector<double> ys, dxs;
     for (const RunData& run : training) {
         const std::vector<PredictionPoint> all = run.observationPoints();
@@ -216,8 +216,8 @@ InputSearch::InputSearch(const std::vector<RunData>& training, const QStringList
             kept.push_back(all[i]);
             ys.push_back(run.observations[i].error_um);
             dxs.push_back(all[i].position_mm - run.fixedEnd_mm());
-            folds_.push_back(allFolds[offset + i]);
-            runOf_.push_back(runIndex);
+            m_folds.push_back(allFolds[offset + i]);
+            m_runOf.push_back(runIndex);
         }
         offset += all.size();
         ++runIndex;
@@ -225,28 +225,28 @@ InputSearch::InputSearch(const std::vector<RunData>& training, const QStringList
         for (qsizetype j = 0; j < candidates.size(); ++j) {
             append(raw[std::size_t(j)], risesAt(run, {candidates[j]}, kept).col(0));
             const PiecewiseInput input = riseInput(run, candidates[j]);
-            for (std::size_t g = 0; g < grid_.size(); ++g)
-                append(lagged[std::size_t(j) * grid_.size() + g],
-                       lagResponse(input, grid_[g], times));
+            for (std::size_t g = 0; g < m_grid.size(); ++g)
+                append(lagged[std::size_t(j) * m_grid.size() + g],
+                       lagResponse(input, m_grid[g], times));
         }
     }
     y_ = Eigen::Map<Eigen::VectorXd>(ys.data(), Eigen::Index(ys.size()));
-    dx_ = Eigen::Map<Eigen::VectorXd>(dxs.data(), Eigen::Index(dxs.size()));
-    raw_ = std::move(raw);
-    lagged_ = std::move(lagged);
-    foldCount_ = *std::max_element(folds_.begin(), folds_.end()) + 1;
+    m_dx = Eigen::Map<Eigen::VectorXd>(dxs.data(), Eigen::Index(dxs.size()));
+    m_raw = std::move(raw);
+    m_lagged = std::move(lagged);
+    m_foldCount = *std::max_element(m_folds.begin(), m_folds.end()) + 1;
 }
 
 std::pair<std::vector<int>, double> InputSearch::fitTaus(const std::vector<int>& chosen,
                                                          int heldOut) const {
     const std::vector<Eigen::Index> rows = rowsOutside(heldOut);
-    std::vector<int> index(chosen.size(), int(grid_.size()) / 2);
+    std::vector<int> index(chosen.size(), int(m_grid.size()) / 2);
     double best = rss(chosen, index, rows);
     for (int sweep = 0; sweep < 4; ++sweep) {
         bool moved = false;
         for (std::size_t k = 0; k < chosen.size(); ++k) {
             std::vector<int> trial = index;
-            for (int g = 0; g < int(grid_.size()); ++g) {
+            for (int g = 0; g < int(m_grid.size()); ++g) {
                 trial[k] = g;
                 const double r = rss(chosen, trial, rows);
                 if (r < best * (1 - 1e-9)) {
@@ -263,7 +263,7 @@ std::pair<std::vector<int>, double> InputSearch::fitTaus(const std::vector<int>&
 
 SetScore InputSearch::crossValidated(const std::vector<int>& chosen) const {
     double bare = 0, shifted = 0;
-    for (int f = 0; f < foldCount_; ++f) {
+    for (int f = 0; f < m_foldCount; ++f) {
         const auto [index, trainRss] = fitTaus(chosen, f);
         if (!std::isfinite(trainRss)) return {};
         const std::vector<Eigen::Index> train = rowsOutside(f), test = rowsIn(f);
@@ -272,12 +272,12 @@ SetScore InputSearch::crossValidated(const std::vector<int>& chosen) const {
         const Eigen::MatrixXd X = design(chosen, index, test);
         const Eigen::VectorXd residual = y_(test) - X * fit.coefficients.head(X.cols());
         bare += residual.squaredNorm();
-        if (positionDependent_) continue;
+        if (m_positionDependent) continue;
         const double zero = fit.coefficients.tail(fit.coefficients.size() - X.cols()).mean();
         shifted += (residual.array() - zero).matrix().squaredNorm();
     }
     const auto n = double(y_.size());
-    if (!positionDependent_ && shifted < bare) return {std::sqrt(shifted / n), true};
+    if (!m_positionDependent && shifted < bare) return {std::sqrt(shifted / n), true};
     return {std::sqrt(bare / n), false};
 }
 
@@ -289,15 +289,15 @@ void InputSearch::append(Eigen::VectorXd& to, const Eigen::VectorXd& part) {
 
 std::vector<Eigen::Index> InputSearch::rowsOutside(int fold) const {
     std::vector<Eigen::Index> rows;
-    for (std::size_t i = 0; i < folds_.size(); ++i)
-        if (folds_[i] != fold) rows.push_back(Eigen::Index(i));
+    for (std::size_t i = 0; i < m_folds.size(); ++i)
+        if (m_folds[i] != fold) rows.push_back(Eigen::Index(i));
     return rows;
 }
 
 std::vector<Eigen::Index> InputSearch::rowsIn(int fold) const {
     std::vector<Eigen::Index> rows;
-    for (std::size_t i = 0; i < folds_.size(); ++i)
-        if (folds_[i] == fold) rows.push_back(Eigen::Index(i));
+    for (std::size_t i = 0; i < m_folds.size(); ++i)
+        if (m_folds[i] == fold) rows.push_back(Eigen::Index(i));
     return rows;
 }
 
@@ -306,17 +306,17 @@ Eigen::MatrixXd InputSearch::design(const std::vector<int>& chosen, const std::v
     Eigen::MatrixXd F(Eigen::Index(rows.size()), 2 * Eigen::Index(chosen.size()));
     for (std::size_t k = 0; k < chosen.size(); ++k) {
         const std::size_t j = std::size_t(chosen[k]);
-        F.col(2 * Eigen::Index(k)) = raw_[j](rows);
-        F.col(2 * Eigen::Index(k) + 1) = lagged_[j * grid_.size() + std::size_t(index[k])](rows);
+        F.col(2 * Eigen::Index(k)) = m_raw[j](rows);
+        F.col(2 * Eigen::Index(k) + 1) = m_lagged[j * m_grid.size() + std::size_t(index[k])](rows);
     }
-    return designOf(F, dx_(rows), positionDependent_);
+    return designOf(F, m_dx(rows), m_positionDependent);
 }
 
 Eigen::MatrixXd InputSearch::fitDesign(const std::vector<int>& chosen,
                                        const std::vector<int>& index,
                                        const std::vector<Eigen::Index>& rows) const {
     const Eigen::MatrixXd X = design(chosen, index, rows);
-    return positionDependent_ ? X : withZerosOfTheirRuns(X, runOf_, rows);
+    return m_positionDependent ? X : withZerosOfTheirRuns(X, m_runOf, rows);
 }
 
 double InputSearch::rss(const std::vector<int>& chosen, const std::vector<int>& index,

@@ -15,7 +15,7 @@
 #include "core/models/ModelScore.h"
 #include "core/models/ModelValidation.h"
 #include "core/models/TrainingEnvelope.h"
-#include "ui/app/BackgroundJob.h"
+#include "ui/shell/BackgroundJob.h"
 
 namespace driftlab::ui {
 

@@ -1,4 +1,4 @@
-#include "ui/app/BackgroundJob.h"
+#include "ui/shell/BackgroundJob.h"
 
 #include <QtConcurrent/QtConcurrentRun>
 

@@ -1,7 +1,7 @@
-#include "ui/app/DiagnosisJob.h"
+#include "ui/shell/DiagnosisJob.h"
 
 #include "db/DiagnosisRecords.h"
-#include "ui/app/FitJob.h"
+#include "ui/shell/FitJob.h"
 
 namespace driftlab::ui {
 

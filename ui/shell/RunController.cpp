@@ -1,10 +1,10 @@
-#include "ui/app/RunController.h"
+#include "ui/shell/RunController.h"
 
 #include <QDateTime>
 
 #include "acquisition/modbus/ModbusUrl.h"
-#include "ui/app/Session.h"
 #include "ui/models/DeviceHealthModel.h"
+#include "ui/shell/Session.h"
 
 namespace driftlab::ui {
 

@@ -1,4 +1,4 @@
-#include "tests/diagnosis/SuiteOutcomes.h"
+#include "tests/support/SuiteOutcomes.h"
 
 #include <gtest/gtest.h>
 

@@ -33,6 +33,33 @@ inline CliResult runProgram(const QString& program, const QStringList& args,
             p.readAllStandardError()};
 }
 
+/// Runs a real tool (python3, zip) in `workDir`; fails the test if it fails.
+inline void runTool(const QString& program, const QStringList& args, const QString& workDir = {}) {
+    QProcess p;
+    if (!workDir.isEmpty()) p.setWorkingDirectory(workDir);
+    p.start(program, args);
+    ASSERT_TRUE(p.waitForFinished(60'000)) << qPrintable(program);
+    ASSERT_EQ(p.exitCode(), 0) << qPrintable(program) << ": "
+                               << p.readAllStandardError().constData();
+}
+
+enum class PdfText {
+    Layout,        ///< `pdftotext -layout`: columns and tables as printed
+    ReadingOrder,  ///< `pdftotext`, whitespace collapsed: phrases across lines
+};
+
+/// The text of a PDF as poppler's pdftotext reads it: the PDF a user opens.
+inline QString pdfText(const QString& pdf, PdfText how = PdfText::Layout) {
+    QProcess p;
+    QStringList args{pdf, QStringLiteral("-")};
+    if (how == PdfText::Layout) args.prepend(QStringLiteral("-layout"));
+    p.start(QStringLiteral("pdftotext"), args);
+    EXPECT_TRUE(p.waitForFinished(60'000));
+    EXPECT_EQ(p.exitCode(), 0) << p.readAllStandardError().constData();
+    const QString text = QString::fromUtf8(p.readAllStandardOutput());
+    return how == PdfText::Layout ? text : text.simplified();
+}
+
 inline CliResult runCli(const QStringList& args, const QStringList& wrapper = {}) {
     return runProgram(QStringLiteral(DRIFTLAB_CLI), args, wrapper);
 }

@@ -1,8 +1,8 @@
-#include "tests/core/BadBundleCases.h"
+#include "tests/support/BadBundleCases.h"
 
 #include <QDir>
 
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
 
 namespace driftlab::test {
 

@@ -1,6 +1,6 @@
-#include "ui/app/SelectedCampaignLoader.h"
+#include "ui/shell/SelectedCampaignLoader.h"
 
-#include "ui/app/Session.h"
+#include "ui/shell/Session.h"
 
 namespace driftlab::ui {
 

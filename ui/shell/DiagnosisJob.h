@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "core/diagnosis/Diagnosis.h"
-#include "ui/app/BackgroundJob.h"
+#include "ui/shell/BackgroundJob.h"
 
 namespace driftlab::ui {
 

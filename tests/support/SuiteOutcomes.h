@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/diagnosis/Diagnosis.h"
-#include "tests/diagnosis/FindingsText.h"
+#include "tests/support/FindingsText.h"
 
 namespace driftlab::test {
 

@@ -1,11 +1,11 @@
-#include "core/models/DynamicRegressionModel.h"
+#include "core/models/LaggedSensorsModel.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "core/models/CrossValidation.h"
-#include "core/models/DynamicRegressionSearch.h"
+#include "core/models/LaggedSensorsSearch.h"
 #include "core/models/LeastSquares.h"
 #include "core/models/ModelError.h"
 #include "core/models/RunDataAccess.h"
@@ -24,21 +24,20 @@ using arx::withRunZeros;
 
 }  // namespace
 
-DynamicRegressionModel::DynamicRegressionModel(DynamicRegressionOptions options)
-    : options_(options) {}
+LaggedSensorsModel::LaggedSensorsModel(LaggedSensorsOptions options) : m_options(options) {}
 
-QString DynamicRegressionModel::describe() const {
+QString LaggedSensorsModel::describe() const {
     return QStringLiteral(
                "Dynamic regression: up to %1 sensors chosen by cross-validation over the "
                "training runs, each entering with its current temperature rise and with its "
                "rise through a first-order lag of fitted time constant, so that drift which "
                "lags the sensors is followed.")
-        .arg(options_.max_sensors);
+        .arg(m_options.max_sensors);
 }
 
-FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training) {
-    if (options_.max_sensors < 1 || options_.grid_points < 2 || !(options_.min_tau_s > 0) ||
-        !(options_.max_tau_s > options_.min_tau_s))
+FitSummary LaggedSensorsModel::fitRuns(const std::vector<RunData>& training) {
+    if (m_options.max_sensors < 1 || m_options.grid_points < 2 || !(m_options.min_tau_s > 0) ||
+        !(m_options.max_tau_s > m_options.min_tau_s))
         throw ModelError(
             QStringLiteral("model 'arx' needs at least one sensor and a time-constant "
                            "grid of 2 or more points with 0 < min < max"));
@@ -48,7 +47,7 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
 
     // Forward selection: the sensor that most lowers the cross-validated RMS,
     // one at a time; then the simplest set nearly as good as the best.
-    const InputSearch search(training, candidates, options_);
+    const InputSearch search(training, candidates, m_options);
     struct SensorSet {
         std::vector<int> sensors;
         SetScore score;
@@ -56,7 +55,7 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
     };
     std::vector<SensorSet> sets;
     std::vector<int> chosen;
-    const int largest = std::min(options_.max_sensors, int(candidates.size()));
+    const int largest = std::min(m_options.max_sensors, int(candidates.size()));
     for (int size = 1; size <= largest; ++size) {
         if (cancelRequested()) throw ModelError(QStringLiteral("model 'arx': fit cancelled"));
         SetScore best;
@@ -94,15 +93,15 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
 
     const std::vector<int>& set = sets[pick].sensors;
     const std::vector<int>& index = sets[pick].tau_index;
-    inputs_.clear();
+    m_inputs.clear();
     for (std::size_t k = 0; k < set.size(); ++k)
-        inputs_.push_back({candidates[set[k]], search.grid()[std::size_t(index[k])]});
+        m_inputs.push_back({candidates[set[k]], search.grid()[std::size_t(index[k])]});
 
     // Gains on every observation, at the chosen time constants.
     const bool positionDependent = training.front().positionDependent();
     const Eigen::MatrixXd X = stackRows(training, [&](const RunData& run) {
         const std::vector<PredictionPoint> at = run.observationPoints();
-        return designOf(DynamicRegressionModel::features(run, at), positionsFromFixedEnd(run, at),
+        return designOf(LaggedSensorsModel::features(run, at), positionsFromFixedEnd(run, at),
                         positionDependent);
     });
     const Eigen::VectorXd y = stackRows(training, &RunData::observedErrors);
@@ -111,35 +110,35 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
         runOfRow.insert(runOfRow.end(), training[r].observations.size(), int(r));
     const LeastSquaresFit fit = solveLeastSquares(
         positionDependent ? X : withRunZeros(X, runOfRow, int(training.size())), y);
-    coefficients_ = fit.coefficients.head(X.cols());
-    commonZero_um_ = 0;
+    m_coefficients = fit.coefficients.head(X.cols());
+    m_commonZero_um = 0;
     if (!positionDependent && sets[pick].score.commonZero)
-        commonZero_um_ = fit.coefficients.tail(Eigen::Index(training.size())).mean();
+        m_commonZero_um = fit.coefficients.tail(Eigen::Index(training.size())).mean();
 
-    const Eigen::Index m = 2 * Eigen::Index(inputs_.size());
+    const Eigen::Index m = 2 * Eigen::Index(m_inputs.size());
     QStringList described;
-    for (std::size_t k = 0; k < inputs_.size(); ++k) {
-        const QString& s = inputs_[k].channel;
+    for (std::size_t k = 0; k < m_inputs.size(); ++k) {
+        const QString& s = m_inputs[k].channel;
         const Eigen::Index a = 2 * Eigen::Index(k), g = a + 1;
         // The grid step sets how well τ is known; no 1σ is claimed for it.
         summary.parameters[s + QStringLiteral(".tau")] = {
-            inputs_[k].tau_s, std::numeric_limits<double>::quiet_NaN(), QStringLiteral("s")};
-        summary.parameters[s + QStringLiteral(".a")] = {coefficients_[a], fit.sigma[a],
+            m_inputs[k].tau_s, std::numeric_limits<double>::quiet_NaN(), QStringLiteral("s")};
+        summary.parameters[s + QStringLiteral(".a")] = {m_coefficients[a], fit.sigma[a],
                                                         QStringLiteral("µm/K")};
-        summary.parameters[s + QStringLiteral(".a_lag")] = {coefficients_[g], fit.sigma[g],
+        summary.parameters[s + QStringLiteral(".a_lag")] = {m_coefficients[g], fit.sigma[g],
                                                             QStringLiteral("µm/K")};
         if (positionDependent) {
-            summary.parameters[s + QStringLiteral(".b")] = {coefficients_[m + a], fit.sigma[m + a],
+            summary.parameters[s + QStringLiteral(".b")] = {m_coefficients[m + a], fit.sigma[m + a],
                                                             QStringLiteral("µm/(K·mm)")};
             summary.parameters[s + QStringLiteral(".b_lag")] = {
-                coefficients_[m + g], fit.sigma[m + g], QStringLiteral("µm/(K·mm)")};
+                m_coefficients[m + g], fit.sigma[m + g], QStringLiteral("µm/(K·mm)")};
         }
-        described << QStringLiteral("%1 (lag %2)").arg(s, arx::minutesOrHours(inputs_[k].tau_s));
+        described << QStringLiteral("%1 (lag %2)").arg(s, arx::minutesOrHours(m_inputs[k].tau_s));
         if (index[k] == 0 || index[k] + 1 == int(search.grid().size()))
             summary.notes << QStringLiteral(
                                  "the lag of %1 sits at the search bound (%2): the "
                                  "training runs do not pin it down")
-                                 .arg(s, arx::minutesOrHours(inputs_[k].tau_s));
+                                 .arg(s, arx::minutesOrHours(m_inputs[k].tau_s));
         summary.inputs << s;
     }
     if (!positionDependent)
@@ -155,24 +154,24 @@ FitSummary DynamicRegressionModel::fitRuns(const std::vector<RunData>& training)
     return summary;
 }
 
-Eigen::MatrixXd DynamicRegressionModel::features(const RunData& run,
-                                                 const std::vector<PredictionPoint>& at) const {
+Eigen::MatrixXd LaggedSensorsModel::features(const RunData& run,
+                                             const std::vector<PredictionPoint>& at) const {
     const std::vector<double> times = timesOf(at);
-    Eigen::MatrixXd F(Eigen::Index(at.size()), 2 * Eigen::Index(inputs_.size()));
-    for (std::size_t k = 0; k < inputs_.size(); ++k) {
-        F.col(2 * Eigen::Index(k)) = risesAt(run, {inputs_[k].channel}, at).col(0);
+    Eigen::MatrixXd F(Eigen::Index(at.size()), 2 * Eigen::Index(m_inputs.size()));
+    for (std::size_t k = 0; k < m_inputs.size(); ++k) {
+        F.col(2 * Eigen::Index(k)) = risesAt(run, {m_inputs[k].channel}, at).col(0);
         F.col(2 * Eigen::Index(k) + 1) =
-            lagResponse(riseInput(run, inputs_[k].channel), inputs_[k].tau_s, times);
+            lagResponse(riseInput(run, m_inputs[k].channel), m_inputs[k].tau_s, times);
     }
     return F;
 }
 
-Eigen::VectorXd DynamicRegressionModel::predictRun(const RunData& run,
-                                                   const std::vector<PredictionPoint>& at) const {
+Eigen::VectorXd LaggedSensorsModel::predictRun(const RunData& run,
+                                               const std::vector<PredictionPoint>& at) const {
     const Eigen::VectorXd fromInputs =
         designOf(features(run, at), positionsFromFixedEnd(run, at), run.positionDependent()) *
-        coefficients_;
-    return fromInputs.array() + commonZero_um_;
+        m_coefficients;
+    return fromInputs.array() + m_commonZero_um;
 }
 
 }  // namespace driftlab::models

@@ -1,4 +1,4 @@
-#include "tests/core/BundleTestSupport.h"
+#include "tests/support/BundleTestSupport.h"
 
 #include <gtest/gtest.h>
 #include <QCryptographicHash>
@@ -15,7 +15,7 @@ QString exampleBundlePath() {
 }
 
 Campaign exampleCampaign() {
-    BundleReadResult r = readBundle(exampleBundlePath());
+    bundle::BundleReadResult r = bundle::readBundle(exampleBundlePath());
     EXPECT_TRUE(r.ok());
     return *r.campaign;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The search of the dynamic regression (`arx`) over sensors and time
+// The search of the lagged-sensors model (`arx`) over sensors and time
 // constants, and the inputs and designs it shares with the model: a sensor's
 // rise through a first-order lag started at rest at the run's start, and a
 // drift channel's zero per training run.
@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/models/DynamicRegressionModel.h"
 #include "core/models/FirstOrderLag.h"
+#include "core/models/LaggedSensorsModel.h"
 #include "core/models/LeastSquares.h"
 #include "core/models/ThermalErrorData.h"
 
@@ -93,8 +93,8 @@ SetScore crossValidatedWithRunZeros(const Eigen::MatrixXd& F, const Eigen::Vecto
 class InputSearch {
 public:
     InputSearch(const std::vector<RunData>& training, const QStringList& candidates,
-                const DynamicRegressionOptions& options);
-    const std::vector<double>& grid() const { return grid_; }
+                const LaggedSensorsOptions& options);
+    const std::vector<double>& grid() const { return m_grid; }
 
     /// Time-constant grid indices for the sensors `chosen` fitted on the rows
     /// not in `heldOut` (−1: none), by coordinate descent; returns the RSS too.
@@ -118,14 +118,14 @@ private:
     double rss(const std::vector<int>& chosen, const std::vector<int>& index,
                const std::vector<Eigen::Index>& rows) const;
 
-    bool positionDependent_;
-    std::vector<double> grid_;
-    std::vector<int> folds_;
-    std::vector<int> runOf_;  ///< each row's training run
-    int foldCount_ = 0;
-    Eigen::VectorXd y_, dx_;
-    std::vector<Eigen::VectorXd> raw_;     ///< per candidate
-    std::vector<Eigen::VectorXd> lagged_;  ///< per candidate and grid τ
+    bool m_positionDependent;
+    std::vector<double> m_grid;
+    std::vector<int> m_folds;
+    std::vector<int> m_runOf;  ///< each row's training run
+    int m_foldCount = 0;
+    Eigen::VectorXd y_, m_dx;
+    std::vector<Eigen::VectorXd> m_raw;     ///< per candidate
+    std::vector<Eigen::VectorXd> m_lagged;  ///< per candidate and grid τ
 };
 
 }  // namespace driftlab::models::arx

@@ -1,4 +1,4 @@
-#include "tests/models/LeastSquaresBaselines.h"
+#include "tests/support/LeastSquaresBaselines.h"
 
 #include <gtest/gtest.h>
 

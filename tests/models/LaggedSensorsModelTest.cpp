@@ -11,14 +11,14 @@
 #include <cstdio>
 
 #include "core/models/AutoModel.h"
-#include "core/models/DynamicRegressionModel.h"
+#include "core/models/LaggedSensorsModel.h"
 #include "core/models/MlrModel.h"
 #include "core/models/ModelFactory.h"
 #include "core/models/ModelScore.h"
 #include "core/models/RunDataAccess.h"
 #include "core/rig/CampaignSimulator.h"
-#include "tests/models/LeastSquaresBaselines.h"
 #include "tests/models/ModelTestSupport.h"
+#include "tests/support/LeastSquaresBaselines.h"
 
 namespace driftlab::models {
 namespace {
@@ -61,10 +61,10 @@ Campaign laggedDriftCampaign(bool steadyRoom = false,
     return c;
 }
 
-TEST(DynamicRegression, recoversTheLagOfAClosedFormAndPredictsARunHeatedDifferently) {
+TEST(LaggedSensorsModel, recoversTheLagOfAClosedFormAndPredictsARunHeatedDifferently) {
     const Campaign c = laggedDriftCampaign();
     const QString z = QStringLiteral("D_z");
-    DynamicRegressionModel arx;
+    LaggedSensorsModel arx;
     const FitSummary fit = arx.fit(test::driftDataset(c, {"SP1", "SP2"}, z));
     ASSERT_TRUE(fit.success) << qPrintable(fit.message);
     EXPECT_EQ(fit.inputs, QStringList({QStringLiteral("T_spindle")}));
@@ -88,7 +88,7 @@ TEST(DynamicRegression, recoversTheLagOfAClosedFormAndPredictsARunHeatedDifferen
 /// arx fitted on SP1 and SP2 of `c`'s z drift, and its held-out score on SP3.
 std::pair<FitSummary, Score> arxOnTwoRunsScoredOnTheThird(const Campaign& c) {
     const QString z = QStringLiteral("D_z");
-    DynamicRegressionModel arx;
+    LaggedSensorsModel arx;
     const FitSummary fit = arx.fit(test::driftDataset(c, {"SP1", "SP2"}, z));
     EXPECT_TRUE(fit.success) << qPrintable(fit.message);
     const Score score = scoreModel(arx, test::driftDataset(c, {"SP3"}, z));
@@ -96,7 +96,7 @@ std::pair<FitSummary, Score> arxOnTwoRunsScoredOnTheThird(const Campaign& c) {
     return {fit, score};
 }
 
-TEST(DynamicRegression, eachTrainingRunsZeroIsFittedApartAndLeftOutOfThePrediction) {
+TEST(LaggedSensorsModel, eachTrainingRunsZeroIsFittedApartAndLeftOutOfThePrediction) {
     // SP1's first minute reads 0.3 µm high and SP2's 0.2 µm low, as that
     // minute's noise moves a run's zero; SP3 is measured from a clean zero.
     // One offset for both runs would leave the 0.5 µm between them to the
@@ -121,7 +121,7 @@ TEST(DynamicRegression, eachTrainingRunsZeroIsFittedApartAndLeftOutOfThePredicti
         << "clean training runs: " << cleanScore.rms_um << " µm";
 }
 
-TEST(DynamicRegression, anOffsetEveryRunSharesIsPredicted) {
+TEST(LaggedSensorsModel, anOffsetEveryRunSharesIsPredicted) {
     // Every run's first minute reads 0.3 µm high (a probe that settles after
     // its first minute, say): every drift, the held-out run's too, sits 0.3 µm
     // low after it. Cross-validation over the training runs finds that offset
@@ -135,10 +135,10 @@ TEST(DynamicRegression, anOffsetEveryRunSharesIsPredicted) {
     EXPECT_LT(score.rms_um, 0.1);
 }
 
-TEST(DynamicRegression, aStaticTwoSensorErrorNeedsNoLag) {
+TEST(LaggedSensorsModel, aStaticTwoSensorErrorNeedsNoLag) {
     const test::TwoSensorGains gains;
     const Campaign c = test::twoSensorCampaign(2, gains);
-    DynamicRegressionModel arx;
+    LaggedSensorsModel arx;
     const FitSummary fit = arx.fit(test::driftDataset(c, {"S1", "S2"}, {}));
     ASSERT_TRUE(fit.success) << qPrintable(fit.message);
     EXPECT_TRUE(fit.inputs.contains(QStringLiteral("T_nut")));
@@ -149,11 +149,11 @@ TEST(DynamicRegression, aStaticTwoSensorErrorNeedsNoLag) {
     EXPECT_EQ(fit.parameters.at(QStringLiteral("T_nut.b")).unit, QStringLiteral("µm/(K·mm)"));
 }
 
-TEST(DynamicRegression, leavesOutAThermometerThatStaysWithinItsNoise) {
+TEST(LaggedSensorsModel, leavesOutAThermometerThatStaysWithinItsNoise) {
     // A steady room's thermometer carries no heat; lagged hours long, its noise
     // becomes a slow wander a fit on a few runs can match by chance.
     const Campaign c = laggedDriftCampaign(true);
-    DynamicRegressionModel arx;
+    LaggedSensorsModel arx;
     const FitSummary fit = arx.fit(test::driftDataset(c, {"SP1", "SP2"}, QStringLiteral("D_z")));
     ASSERT_TRUE(fit.success) << qPrintable(fit.message);
     EXPECT_EQ(fit.notes.filter(QStringLiteral("left out: T_room stays within its noise")).size(), 1)

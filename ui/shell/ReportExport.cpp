@@ -1,13 +1,13 @@
-#include "ui/app/ReportExport.h"
+#include "ui/shell/ReportExport.h"
 
 #include <QDateTime>
 #include <QProgressDialog>
 #include <QTimer>
 
-#include "ui/app/BackgroundJob.h"
-#include "ui/app/FitJob.h"
-#include "ui/app/Session.h"
 #include "ui/report/ReportPdf.h"
+#include "ui/shell/BackgroundJob.h"
+#include "ui/shell/FitJob.h"
+#include "ui/shell/Session.h"
 
 namespace driftlab::ui {
 namespace {

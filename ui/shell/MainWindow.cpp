@@ -1,4 +1,4 @@
-#include "ui/app/MainWindow.h"
+#include "ui/shell/MainWindow.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -18,8 +18,6 @@
 
 #include "db/CampaignStore.h"
 #include "db/StoreOverview.h"
-#include "ui/app/ReportExport.h"
-#include "ui/app/Session.h"
 #include "ui/models/CampaignTreeModel.h"
 #include "ui/models/EventLogModel.h"
 #include "ui/pages/CompensationPage.h"
@@ -28,6 +26,8 @@
 #include "ui/pages/ModelsPage.h"
 #include "ui/pages/RunPage.h"
 #include "ui/pages/SetupPage.h"
+#include "ui/shell/ReportExport.h"
+#include "ui/shell/Session.h"
 
 namespace driftlab::ui {
 namespace {

@@ -1,4 +1,4 @@
-#include "ui/app/FitJob.h"
+#include "ui/shell/FitJob.h"
 
 #include "core/models/ModelFactory.h"
 #include "core/models/ModelledRuns.h"
