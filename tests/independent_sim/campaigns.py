@@ -272,6 +272,7 @@ def main(argv=None):
     ap.add_argument("--scale", type=float, default=1.0,
                     help="every hidden effect's size times this (weaker effects, for the reliability table)")
     ap.add_argument("--seed-offset", type=int, default=0, help="added to every bundle's seed (other noise)")
+    ap.add_argument("--verbose", action="store_true", help="a line per bundle written, on stderr")
     a = ap.parse_args(argv)
     entries = suite()
     if a.quick:
@@ -286,11 +287,13 @@ def main(argv=None):
         m = build_one(e, a.out, refit=not a.no_refit, scale=a.scale, seed_offset=a.seed_offset)
         manifest.append(m)
         s = m["truth"]
-        print(f"{e['name']:42s} expected={m['expected']}  thermal rms {s['thermal_error_rms_um']:.1f} um  "
-              f"({s['generation_s']:.1f} s)", file=sys.stderr)
+        if a.verbose:
+            print(f"{e['name']:42s} expected={m['expected']}  thermal rms {s['thermal_error_rms_um']:.1f} um  "
+                  f"({s['generation_s']:.1f} s)", file=sys.stderr)
     with open(os.path.join(a.out, "manifest.json"), "w") as f:
         json.dump(manifest, f, indent=1)
-    print(f"wrote {len(manifest)} bundles to {a.out} in {time.time() - t0:.1f} s", file=sys.stderr)
+    if a.verbose:
+        print(f"wrote {len(manifest)} bundles to {a.out} in {time.time() - t0:.1f} s", file=sys.stderr)
 
 
 if __name__ == "__main__":

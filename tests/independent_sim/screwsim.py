@@ -343,8 +343,11 @@ def selfcheck(verbose=True):
 if __name__ == "__main__":
     if "--selfcheck" in sys.argv:
         sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-        print("screwsim self-check")
-        good = selfcheck()
-        print("OK" if good else "FAILED")
+        # Quiet when every check passes (a passing test prints nothing);
+        # --verbose, or a failure, shows every check with its error.
+        good = selfcheck(verbose="--verbose" in sys.argv)
+        if not good:
+            print("screwsim self-check FAILED")
+            selfcheck(verbose=True)
         sys.exit(0 if good else 1)
     print(__doc__)

@@ -270,6 +270,7 @@ def main(argv=None):
     ap.add_argument("--out", required=True)
     ap.add_argument("--only", default="", help="comma-separated bundle names")
     ap.add_argument("--no-refit", action="store_true", help="skip the base refits (labels are the same)")
+    ap.add_argument("--verbose", action="store_true", help="a line per bundle written, on stderr")
     a = ap.parse_args(argv)
     entries = suite()
     if a.only:
@@ -287,12 +288,14 @@ def main(argv=None):
             if not k.startswith("_"):
                 x = v.get("x_laser_noise", v.get("x_temp_noise"))
                 line += f"  {k}: {x:.1f}x" if x is not None else f"  {k}: raw {v['raw_rms_um']:.2f} um"
-        print(line, file=sys.stderr)
+        if a.verbose:
+            print(line, file=sys.stderr)
         if tr.get("label_check", True) is not True:
             print(f"CHECK {e['name']}: {tr['label_check']}", file=sys.stderr)
     with open(os.path.join(a.out, "manifest.json"), "w") as f:
         json.dump(manifest, f, indent=1)
-    print(f"wrote {len(manifest)} bundles to {a.out} in {time.time() - t0:.1f} s", file=sys.stderr)
+    if a.verbose:
+        print(f"wrote {len(manifest)} bundles to {a.out} in {time.time() - t0:.1f} s", file=sys.stderr)
 
 
 if __name__ == "__main__":

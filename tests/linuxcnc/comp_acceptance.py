@@ -150,4 +150,4 @@ def judge(readings, expected, count):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(lcnc_sim.quiet_unless_failed(main))

@@ -85,4 +85,4 @@ def judge(steps):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(lcnc_sim.quiet_unless_failed(main))

@@ -97,6 +97,22 @@ def available():
     return probe.returncode == 0
 
 
+def quiet_unless_failed(main):
+    """Runs main() with its prints kept back: a passing acceptance test prints
+    nothing; a failure (or a skip) prints every table and step it checked."""
+    import contextlib
+    import io
+    kept = io.StringIO()
+    try:
+        with contextlib.redirect_stdout(kept):
+            code = main()
+    except SystemExit as e:  # skip_unless_available() and the like
+        code = e.code
+    if code:
+        sys.stdout.write(kept.getvalue())
+    return code
+
+
 def skip_unless_available():
     if not available():
         print("SKIP: LinuxCNC (Debian linuxcnc-uspace) is not installed")
