@@ -2,8 +2,6 @@
 // and now on this machine (medians of several repetitions). Figures, not
 // verdicts: each line names its target, the reader judges.
 #include <glog/logging.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -253,12 +251,7 @@ int run(const QStringList& args) {
 
 int main(int argc, char** argv) {
     // The plot figure draws the real dashboard, offscreen unless a screen is asked for.
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
-        const QByteArray runtime = QByteArray("/tmp/runtime-") + QByteArray::number(getuid());
-        mkdir(runtime.constData(), 0700);
-        qputenv("XDG_RUNTIME_DIR", runtime);
-    }
+    driftlab::cli::prepareHeadlessQt();
     QApplication app(argc, argv);
     FLAGS_minloglevel = google::GLOG_FATAL;  // Ceres's glog: only fatal messages
     QCoreApplication::setApplicationName(QStringLiteral("driftlab-bench"));

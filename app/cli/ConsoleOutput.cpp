@@ -1,5 +1,6 @@
 #include "app/cli/ConsoleOutput.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 #include <QJsonDocument>
 #include <cstdio>
@@ -35,6 +36,15 @@ bool printProgress(const QString& label, double fraction) {
 void endProgressLine() {
     if (g_progressLineOpen) std::fputc('\n', stderr);
     g_progressLineOpen = false;
+}
+
+void prepareHeadlessQt() {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+        const QByteArray runtime = QByteArray("/tmp/runtime-") + QByteArray::number(getuid());
+        mkdir(runtime.constData(), 0700);
+        qputenv("XDG_RUNTIME_DIR", runtime);
+    }
 }
 
 void printJson(const QJsonObject& object) {

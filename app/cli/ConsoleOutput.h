@@ -21,6 +21,11 @@ bool printProgress(const QString& label, double fraction);
 /// Ends an unfinished progress line so that what follows starts on its own line.
 void endProgressLine();
 
+/// Before the QApplication of a program without windows: Qt renders
+/// offscreen (unless QT_QPA_PLATFORM says otherwise) and gets the private
+/// runtime folder it wants, made as Qt would make it, without its warning.
+void prepareHeadlessQt();
+
 void printJson(const QJsonObject& object);
 void printLine(const QString& text);
 

@@ -1,8 +1,6 @@
 // driftlab-cli: the headless DriftLab. Progress on stderr, results on stdout
 // (JSON with --json), non-zero exit and a one-line reason on failure.
 #include <glog/logging.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <QApplication>
 
@@ -78,13 +76,7 @@ int dispatch(const QStringList& args) {
 
 int main(int argc, char** argv) {
     // Plots are rendered offscreen; the CLI never opens a window.
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    // Qt wants a private runtime folder; make it as Qt would, without its warning.
-    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
-        const QByteArray runtime = QByteArray("/tmp/runtime-") + QByteArray::number(getuid());
-        mkdir(runtime.constData(), 0700);
-        qputenv("XDG_RUNTIME_DIR", runtime);
-    }
+    prepareHeadlessQt();
     QApplication app(argc, argv);
     // Ceres logs through glog; what matters reaches the user as our own
     // one-line reasons and fit notes, so only fatal glog messages show.
