@@ -8,6 +8,8 @@
 #include <QFileInfo>
 #include <algorithm>
 #include <cstdio>
+#include <functional>
+#include <vector>
 
 #include "bench/BenchFigures.h"
 #include "bench/SimulationThroughput.h"
@@ -18,6 +20,28 @@ namespace {
 
 /// Readings the live-read latency figure is the median and p99 of.
 constexpr int kLiveReadings = 25000;
+
+/// A figure --only measures alone: its name, its measurement, its line.
+struct SingleFigure {
+    const char* name;
+    std::function<QJsonObject()> measure;
+    std::function<void(const QJsonObject&)> print;
+};
+
+/// The median of `repetitions` measurements of live compensation's step.
+QJsonObject onlineFigures(int repetitions) {
+    std::vector<double> us;
+    for (int i = 0; i < repetitions; ++i) us.push_back(onlineStepMicroseconds());
+    return {{QStringLiteral("online_step_us"), median(us)},
+            {QStringLiteral("online_repetitions"), repetitions}};
+}
+
+void printOnlineLine(const QJsonObject& f) {
+    printLine(QStringLiteral("online model    %1 µs per observer step + 128-point table update "
+                             "(median of %2; target < 50 µs)")
+                  .arg(f[QStringLiteral("online_step_us")].toDouble(), 0, 'f', 2)
+                  .arg(f[QStringLiteral("online_repetitions")].toInt()));
+}
 
 }  // namespace
 
@@ -71,106 +95,43 @@ int run(const QStringList& args) {
                            .arg(parser.positionalArguments().front()),
                        2);
     const int pushCount = parser.value(pushes).toInt();
-    if (parser.value(only) == QLatin1String("push")) {
-        const QJsonObject figures = pushFigures(std::max(1, pushCount));
-        endProgressLine();
-        if (parser.isSet(json))
-            printJson(figures);
-        else
-            printPushLine(figures);
-        return 0;
-    }
-    if (parser.value(only) == QLatin1String("logging")) {
-        const QJsonObject figures =
-            loggingFigures(std::max(1, parser.value(repeat).toInt()), parser.value(server));
-        endProgressLine();
-        if (parser.isSet(json))
-            printJson(figures);
-        else
-            printLoggingLine(figures);
-        return 0;
-    }
-    if (parser.value(only) == QLatin1String("online")) {
-        // The median of --repeat measurements of live compensation's step.
-        std::vector<double> us;
-        for (int i = 0; i < std::max(1, parser.value(repeat).toInt()); ++i)
-            us.push_back(onlineStepMicroseconds());
-        const double median_us = median(us);
-        if (parser.isSet(json))
-            printJson({{QStringLiteral("online_step_us"), median_us}});
-        else
-            printLine(QStringLiteral("online model    %1 µs per observer step + 128-point table "
-                                     "update (median of %2; target < 50 µs)")
-                          .arg(median_us, 0, 'f', 2)
-                          .arg(us.size()));
-        return 0;
-    }
-    if (parser.value(only) == QLatin1String("live-read")) {
-        const QJsonObject figures = liveReadFigures(kLiveReadings);
-        endProgressLine();
-        if (parser.isSet(json))
-            printJson(figures);
-        else
-            printLiveReadLine(figures);
-        return 0;
-    }
-    if (parser.value(only) == QLatin1String("plot")) {
-        const QJsonObject figures = plotFigures(std::max(3, parser.value(repeat).toInt()));
-        endProgressLine();
-        if (parser.isSet(json))
-            printJson(figures);
-        else
-            printPlotLine(figures);
-        return 0;
-    }
-    if (parser.value(only) == QLatin1String("report")) {
-        // Three by default: the data part takes tens of seconds.
-        const QJsonObject figures =
-            reportFigures(parser.isSet(repeat) ? std::max(1, parser.value(repeat).toInt()) : 3);
-        endProgressLine();
-        if (parser.isSet(json))
-            printJson(figures);
-        else
-            printReportLine(figures);
-        return 0;
-    }
-    if (parser.value(only) == QLatin1String("model-choice")) {
-        const QJsonObject figures = modelChoiceFigures(
-            parser.isSet(repeat) ? std::max(1, parser.value(repeat).toInt()) : 3);
-        endProgressLine();
-        if (parser.isSet(json))
-            printJson(figures);
-        else
-            printModelChoiceLine(figures);
-        return 0;
-    }
-    if (parser.value(only) == QLatin1String("batch")) {
+    const int repetitions = std::max(1, parser.value(repeat).toInt());
+    // The slow figures take three repetitions unless told: their data part takes tens of seconds.
+    const int slowRepetitions = parser.isSet(repeat) ? repetitions : 3;
+    const std::vector<SingleFigure> alone{
+        {"push", [&] { return pushFigures(std::max(1, pushCount)); }, printPushLine},
+        {"online", [&] { return onlineFigures(repetitions); }, printOnlineLine},
+        {"logging", [&] { return loggingFigures(repetitions, parser.value(server)); },
+         printLoggingLine},
+        {"live-read", [] { return liveReadFigures(kLiveReadings); }, printLiveReadLine},
+        {"plot", [&] { return plotFigures(std::max(3, repetitions)); }, printPlotLine},
+        {"diagnosis", [&] { return diagnosisFigures(repetitions); },
+         [](const QJsonObject& f) { printLine(diagnosisLine(f)); }},
+        {"report", [&] { return reportFigures(slowRepetitions); }, printReportLine},
         // Six campaigns: three rounds of two at a time, so -j2 is not flattered by a lone last
         // item.
-        const QJsonObject figures = batchFigures(6, std::max(1, parser.value(repeat).toInt()));
+        {"batch", [&] { return batchFigures(6, repetitions); }, printBatchLine},
+        {"model-choice", [&] { return modelChoiceFigures(slowRepetitions); }, printModelChoiceLine},
+    };
+    if (parser.isSet(only)) {
+        const auto figure = std::find_if(alone.begin(), alone.end(), [&](const SingleFigure& f) {
+            return parser.value(only) == QLatin1String(f.name);
+        });
+        if (figure == alone.end()) {
+            QStringList names;
+            for (const SingleFigure& f : alone) names << QLatin1String(f.name);
+            throw CliError(QStringLiteral("--only: '%1' is not a figure it can measure alone (%2)")
+                               .arg(parser.value(only), names.join(QStringLiteral(", "))),
+                           2);
+        }
+        const QJsonObject figures = figure->measure();
         endProgressLine();
         if (parser.isSet(json))
             printJson(figures);
         else
-            printBatchLine(figures);
+            figure->print(figures);
         return 0;
     }
-    if (parser.value(only) == QLatin1String("diagnosis")) {
-        const QJsonObject figures = diagnosisFigures(std::max(1, parser.value(repeat).toInt()));
-        endProgressLine();
-        if (parser.isSet(json))
-            printJson(figures);
-        else
-            printLine(diagnosisLine(figures));
-        return 0;
-    }
-    if (parser.isSet(only))
-        throw CliError(QStringLiteral("--only: '%1' is not a figure it can measure alone (push, "
-                                      "online, logging, live-read, plot, report, batch, "
-                                      "diagnosis, model-choice)")
-                           .arg(parser.value(only)),
-                       2);
-    const int repetitions = std::max(1, parser.value(repeat).toInt());
     // First, while no other child has raised this process's memory high-water marks.
     const int megabytes = parser.value(importMb).toInt();
     const QJsonObject import =
@@ -182,20 +143,13 @@ int run(const QStringList& args) {
     QJsonObject figures{{QStringLiteral("simulation_cell_steps_per_s"), sim.cell_steps_per_s},
                         {QStringLiteral("simulation_8h_campaign_ms"), sim.campaign_ms},
                         {QStringLiteral("online_step_us"), onlineStepMicroseconds()}};
-    const QJsonObject identification = identificationFigures(std::min(repetitions, 3));
-    for (auto it = identification.begin(); it != identification.end(); ++it)
-        figures[it.key()] = it.value();
-    const QJsonObject diagnosis = diagnosisFigures(std::min(repetitions, 3));
-    for (auto it = diagnosis.begin(); it != diagnosis.end(); ++it) figures[it.key()] = it.value();
-    for (auto it = import.begin(); it != import.end(); ++it) figures[it.key()] = it.value();
     const QJsonObject push = pushCount > 0 ? pushFigures(pushCount) : QJsonObject();
-    const QJsonObject logging = loggingFigures(std::min(repetitions, 3));
-    for (auto it = logging.begin(); it != logging.end(); ++it) figures[it.key()] = it.value();
-    for (auto it = push.begin(); it != push.end(); ++it) figures[it.key()] = it.value();
     const QJsonObject liveRead = liveReadFigures(kLiveReadings);
-    for (auto it = liveRead.begin(); it != liveRead.end(); ++it) figures[it.key()] = it.value();
     const QJsonObject plot = plotFigures(repetitions);
-    for (auto it = plot.begin(); it != plot.end(); ++it) figures[it.key()] = it.value();
+    for (const QJsonObject& part : {identificationFigures(std::min(repetitions, 3)),
+                                    diagnosisFigures(std::min(repetitions, 3)), import,
+                                    loggingFigures(std::min(repetitions, 3)), push, liveRead, plot})
+        for (auto it = part.begin(); it != part.end(); ++it) figures[it.key()] = it.value();
     if (!parser.isSet(noPython)) {
         printProgress(QStringLiteral("scipy comparison"), 0);
         const QJsonObject scipy = scipyFigures();
