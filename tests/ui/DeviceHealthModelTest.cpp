@@ -4,7 +4,6 @@
 
 #include <QAbstractItemModelTester>
 
-#include "tests/ui/RunTestSupport.h"
 #include "ui/models/DeviceHealthModel.h"
 
 using namespace driftlab;

@@ -3,7 +3,6 @@
 // and waiting for a page's background job.
 #include <gtest/gtest.h>
 
-#include <QApplication>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>

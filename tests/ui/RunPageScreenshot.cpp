@@ -8,7 +8,6 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "tests/ui/RunTestSupport.h"
 #include "ui/pages/RunPage.h"
 #include "ui/shell/MainWindow.h"
 #include "ui/shell/RunController.h"

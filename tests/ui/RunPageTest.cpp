@@ -18,7 +18,7 @@
 #include "core/procedures/Procedure.h"
 #include "core/procedures/ProcedurePlan.h"
 #include "tests/acquisition/DevicePeer.h"
-#include "tests/ui/RunTestSupport.h"
+#include "tests/acquisition/LoggedRunSupport.h"
 #include "ui/pages/RunPage.h"
 #include "ui/shell/RunController.h"
 #include "ui/shell/Session.h"
@@ -38,7 +38,7 @@ struct RunFixture {
         QString error;
         EXPECT_TRUE(session.openStore(store, true, &error)) << error.toStdString();
         ui::RunSetup setup;
-        setup.procedure = uitest::twoShortMovingStates();
+        setup.procedure = test::twoShortMovingStates();
         setup.speedup = speedup;
         session.setRunSetup(setup);
     }
@@ -77,7 +77,7 @@ TEST(RunPage, pauseStopsTheRowsResumeGoesOnAndTheStoreHasTheCompleteRun) {
     ASSERT_TRUE(finished.wait(120000) || finished.count() == 1);
     EXPECT_TRUE(finished.first().first().toBool());
     EXPECT_EQ(controller.state(), EngineState::Finished);
-    EXPECT_EQ(uitest::runStatuses(f.store),
+    EXPECT_EQ(test::runStatuses(f.store),
               (QStringList{QStringLiteral("S1=complete"), QStringLiteral("S2=complete")}));
     // The run's campaign is selected and its runs hold every row.
     QString error;
@@ -118,7 +118,7 @@ TEST(RunPage, abortMidRunKeepsTheRunMarkedInterrupted) {
     ASSERT_TRUE(finished.wait(30000) || finished.count() == 1);
     EXPECT_FALSE(finished.first().first().toBool());
     EXPECT_EQ(controller.state(), EngineState::Interrupted);
-    EXPECT_EQ(uitest::runStatuses(f.store), QStringList{QStringLiteral("S1=interrupted")});
+    EXPECT_EQ(test::runStatuses(f.store), QStringList{QStringLiteral("S1=interrupted")});
     bool told = false;
     for (const auto& e : events) told |= e.at(2).toString().contains(QStringLiteral("interrupted"));
     EXPECT_TRUE(told);
@@ -144,7 +144,7 @@ TEST(RunPage, checklistRefusesAnInvalidProcedureAndSaysWhy) {
     const QString why = page.checklist().problems().join(';');
     EXPECT_TRUE(why.contains(QStringLiteral("not valid"))) << why.toStdString();
     EXPECT_TRUE(why.contains(QStringLiteral("sample_interval_s"))) << why.toStdString();
-    EXPECT_EQ(uitest::runStatuses(f.store), QStringList{});
+    EXPECT_EQ(test::runStatuses(f.store), QStringList{});
 }
 
 TEST(RunPage, checklistNamesAModbusDeviceThatDoesNotAnswerWithoutBlockingTheGui) {
@@ -235,5 +235,5 @@ TEST(RunPage, abortEndsARunPausedOnALostModule) {
     ASSERT_TRUE(QTest::qWaitFor([&] { return finished.count() == 1; }, 10000));
     EXPECT_LT(sinceAbort.elapsed(), 2000);
     EXPECT_EQ(controller.state(), EngineState::Interrupted);
-    EXPECT_EQ(uitest::runStatuses(f.store), QStringList{QStringLiteral("E1=interrupted")});
+    EXPECT_EQ(test::runStatuses(f.store), QStringList{QStringLiteral("E1=interrupted")});
 }

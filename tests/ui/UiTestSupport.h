@@ -4,8 +4,6 @@
 // tests' main (tests/support/QtTestMain.cpp).
 #include <gtest/gtest.h>
 
-#include <QApplication>
-#include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 
