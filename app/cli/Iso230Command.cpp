@@ -5,11 +5,14 @@
 #include <QJsonArray>
 #include <cmath>
 
+#include "app/cli/AcceptanceOption.h"
 #include "app/cli/AnalysisJson.h"
 #include "app/cli/CliCommon.h"
 #include "core/bundle/CsvTable.h"
 #include "core/domain/MessageText.h"
+#include "core/iso/AcceptanceJson.h"
 #include "core/iso/Iso230_2.h"
+#include "core/iso/PositioningAcceptance.h"
 
 namespace driftlab::cli {
 namespace {
@@ -111,7 +114,9 @@ int iso230Command(const QStringList& args) {
         QStringLiteral("With a BUNDLE or --db: the run to evaluate (default: the positioning run, "
                        "or the only run with positioning readings)."),
         QStringLiteral("R")};
-    parseArguments(parser, args, campaignSourceOptions() << edition << coverage << runOption,
+    const QCommandLineOption specOption = acceptanceSpecOption();
+    parseArguments(parser, args,
+                   campaignSourceOptions() << edition << coverage << runOption << specOption,
                    {QStringLiteral("CSV"),
                     QStringLiteral("Readings: a CSV file with columns target_mm, direction (+ "
                                    "or -), cycle, deviation_um (actual - target); or a campaign "
@@ -130,6 +135,7 @@ int iso230Command(const QStringList& args) {
     const QStringList positional = parser.positionalArguments();
     std::vector<iso::Reading> readings;
     QString source;
+    std::optional<iso::PositioningAcceptance> acceptance;
     const bool fromCsv = !parser.isSet(QStringLiteral("db")) && positional.size() == 1 &&
                          !QFileInfo(positional.front()).isDir() &&
                          !positional.front().endsWith(QLatin1String(".zip"), Qt::CaseInsensitive);
@@ -138,6 +144,11 @@ int iso230Command(const QStringList& args) {
     if (fromCsv) {
         if (parser.isSet(runOption))
             throw CliError(QStringLiteral("--run is for a BUNDLE or --db, not a CSV file"), 2);
+        if (parser.isSet(specOption))
+            throw CliError(QStringLiteral("--spec needs a campaign (BUNDLE or --db): the 20 °C "
+                                          "normalisation and the budget read its thermometers; "
+                                          "import the CSV first"),
+                           2);
         source = positional.front();
         readings = readCsv(source);
     } else {
@@ -148,18 +159,29 @@ int iso230Command(const QStringList& args) {
         const Run& run = choosePositioningRun(campaign, parser.value(runOption));
         source = QStringLiteral("run %1 of %2").arg(run.id, campaign.name);
         readings = iso::readingsOf(run);
+        if (const auto spec = acceptanceSpecification(parser, campaign)) {
+            acceptance = iso::evaluateAcceptance(campaign, run, *spec, settings);
+            if (!acceptance->ok())
+                throw CliError(source + QStringLiteral(": ") + acceptance->error);
+        }
     }
 
-    const iso::Evaluation result = iso::evaluate(readings, settings);
+    const iso::Evaluation result =
+        acceptance ? acceptance->evaluation : iso::evaluate(readings, settings);
     if (!result.ok()) throw CliError(source + QStringLiteral(": ") + result.error);
     printWarnings(result.warnings);
     if (parser.isSet(QStringLiteral("json"))) {
         QJsonObject json = iso230EvaluationJson(result);
         json[QStringLiteral("source")] = source;
+        if (acceptance) json[QStringLiteral("acceptance")] = iso::acceptanceJson(*acceptance);
         printJson(json);
         return 0;
     }
     printEvaluation(result, source);
+    if (acceptance) {
+        printLine(QString());
+        for (const QString& line : iso::acceptanceText(*acceptance)) printLine(line);
+    }
     return 0;
 }
 

@@ -6,6 +6,7 @@
 #include <QFileInfo>
 #include <QJsonArray>
 
+#include "app/cli/AcceptanceOption.h"
 #include "app/cli/CliCommon.h"
 #include "app/cli/FlaggedSamples.h"
 #include "core/report/AcceptanceReportData.h"
@@ -90,8 +91,8 @@ int reportCommand(const QStringList& args) {
         QStringLiteral("NAME")};
     Arguments arguments = campaignSourceArguments();
     parseArguments(parser, args,
-                   campaignSourceOptions()
-                       << pdf << html << csv << runOption << operatorOption << keepFlaggedOption(),
+                   campaignSourceOptions() << pdf << html << csv << runOption << operatorOption
+                                           << keepFlaggedOption() << acceptanceSpecOption(),
                    arguments);
     if (!parser.isSet(pdf) && !parser.isSet(html) && !parser.isSet(csv))
         throw CliError(QStringLiteral("give at least one of --pdf FILE, --html DIR, --csv DIR"), 2);
@@ -109,6 +110,7 @@ int reportCommand(const QStringList& args) {
     report::ReportOptions options;
     options.positioning_run = run;
     options.operator_name = parser.value(operatorOption);
+    options.acceptance = acceptanceSpecification(parser, campaign);
     options.version = QStringLiteral(DRIFTLAB_VERSION);
     options.report_date =
         QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'"));

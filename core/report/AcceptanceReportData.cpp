@@ -67,8 +67,22 @@ PositioningSection positioning(const Campaign& campaign, const ReportOptions& op
     PositioningSection s;
     s.run_id = positioningRun(campaign, options.positioning_run, &s.run_note, &s.not_applicable);
     if (!s.not_applicable.isEmpty()) return s;
-    s.evaluation =
-        iso::evaluate(iso::readingsOf(*campaign.findRun(s.run_id)), options.iso_settings);
+    const Run& run = *campaign.findRun(s.run_id);
+    s.evaluation = iso::evaluate(iso::readingsOf(run), options.iso_settings);
+    QString error;
+    const auto spec =
+        options.acceptance ? options.acceptance : iso::campaignAcceptance(campaign, &error);
+    if (spec && s.evaluation.ok()) {
+        iso::PositioningAcceptance acceptance =
+            iso::evaluateAcceptance(campaign, run, *spec, options.iso_settings);
+        if (acceptance.ok()) {
+            s.evaluation = acceptance.evaluation;
+            s.acceptance = std::move(acceptance);
+        } else {
+            error = acceptance.error;
+        }
+    }
+    s.acceptance_error = error;
     if (!s.evaluation.ok())
         s.not_applicable = QStringLiteral("run %1: %2").arg(s.run_id, s.evaluation.error);
     return s;

@@ -15,6 +15,7 @@
 #include "core/domain/Campaign.h"
 #include "core/iso/Iso230_2.h"
 #include "core/iso/Iso230_3.h"
+#include "core/iso/PositioningAcceptance.h"
 #include "core/models/ModelScore.h"
 #include "core/models/ThermalErrorData.h"
 
@@ -30,6 +31,9 @@ struct ReportOptions {
     QString report_date;    ///< ISO 8601, set by the caller (tests pin it)
     iso::Settings iso_settings;
     iso::DriftSettings drift_settings;
+    /// Tolerances, set-up uncertainty and 20 °C; none: the campaign's own
+    /// `acceptance` object, if it has one.
+    std::optional<iso::AcceptanceSpecification> acceptance;
     /// The fraction done; returning false cancels (the cross-state matrix and
     /// the diagnosis are the expensive parts and check it often).
     std::function<bool(double fraction)> progress;
@@ -49,8 +53,11 @@ struct Cover {
 struct PositioningSection {
     QString not_applicable;
     QString run_id;
-    QString run_note;  ///< how the run was chosen when it was not given
-    iso::Evaluation evaluation;
+    QString run_note;            ///< how the run was chosen when it was not given
+    iso::Evaluation evaluation;  ///< at 20 °C when `acceptance` normalised it
+    /// With a specification: environment, budget and verdicts.
+    std::optional<iso::PositioningAcceptance> acceptance;
+    QString acceptance_error;  ///< why a specification could not be applied
 };
 
 struct DriftSection {

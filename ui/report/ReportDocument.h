@@ -38,6 +38,7 @@ struct Plot {
     std::optional<iso::Evaluation> iso230_2;  ///< drawn by the GUI's Iso230_2Plot
     std::optional<CurvePlot> curves;
     std::optional<MapPlot> map;
+    std::optional<double> accuracy_tolerance_um;  ///< tolerance lines on the ISO 230-2 plot
 };
 
 struct Block {

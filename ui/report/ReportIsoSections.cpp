@@ -1,5 +1,7 @@
 // Sections 1-3 of the acceptance report: the cover, ISO 230-2 and ISO 230-3.
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "ui/report/ReportDocument.h"
 
@@ -10,6 +12,89 @@ using namespace driftlab::report;
 
 QString sign(Direction d) {
     return d == Direction::Positive ? QStringLiteral("+") : QStringLiteral("−");
+}
+
+/// Tolerances, verdicts, the test's environment and the uncertainty budget.
+void addAcceptance(ReportDocument& doc, const iso::PositioningAcceptance& a) {
+    doc.subheading(QStringLiteral("Acceptance: %1").arg(iso::toString(a.overall())));
+    if (a.decisions.empty()) {
+        doc.paragraph(QStringLiteral("The specification sets no tolerance for axis %1: the "
+                                     "values and their uncertainties are stated, no verdict.")
+                          .arg(a.axis));
+    } else {
+        doc.paragraph(QStringLiteral(
+            "Decision rule of ISO 14253-1: conformance is proven (PASS) when the value plus its "
+            "expanded uncertainty U is within the tolerance; non-conformance is proven (FAIL) "
+            "when the value minus U is beyond it; otherwise the measurement cannot tell (NOT "
+            "PROVEN). Margin = tolerance − (value + U)."));
+        Table verdicts{QStringLiteral("iso230-2-verdicts"),
+                       {QStringLiteral("Value"), QStringLiteral("Result µm"),
+                        QStringLiteral("U µm (k = %1)").arg(a.budget.coverage_k),
+                        QStringLiteral("Tolerance µm"), QStringLiteral("Margin µm"),
+                        QStringLiteral("Verdict")},
+                       {}};
+        for (const iso::Decision& d : a.decisions)
+            verdicts.rows.push_back({text(d.parameter), number(d.value_um, 3),
+                                     number(d.expanded_um, 3), number(d.tolerance_um, 3),
+                                     number(d.margin_um, 3), text(iso::toString(d.verdict))});
+        doc.table(verdicts);
+    }
+    doc.subheading(QStringLiteral("Environment and 20 °C"));
+    Table environment{
+        QStringLiteral("iso230-2-environment"),
+        {QStringLiteral("Temperature"), QStringLiteral("Channels"), QStringLiteral("Start °C"),
+         QStringLiteral("End °C"), QStringLiteral("Min °C"), QStringLiteral("Max °C"),
+         QStringLiteral("Mean °C")},
+        {}};
+    for (const auto& [name, t] : {std::pair{QStringLiteral("air"), a.environment.air},
+                                  std::pair{QStringLiteral("material"), a.environment.material}}) {
+        if (t)
+            environment.rows.push_back({text(name), text(t->channels.join(QStringLiteral(", "))),
+                                        number(t->start_C, 2), number(t->end_C, 2),
+                                        number(t->min_C, 2), number(t->max_C, 2),
+                                        number(t->mean_C, 2)});
+        else
+            environment.rows.push_back({text(name), text(QStringLiteral("not logged")), text({}),
+                                        text({}), text({}), text({}), text({})});
+    }
+    doc.table(environment);
+    QString normalisation = a.normalisation.description;
+    normalisation[0] = normalisation[0].toUpper();
+    doc.paragraph(normalisation + QLatin1Char('.'));
+    for (const QString& note : a.environment.notes) doc.paragraph(QStringLiteral("Note: ") + note);
+    doc.subheading(QStringLiteral("Uncertainty budget (ISO 230-2 annex A, ISO/TR 230-9)"));
+    doc.paragraph(QStringLiteral("Standard uncertainties over the measured length %1 mm; sensor "
+                                 "accuracies ±a count as a/√3. E, M and A take every "
+                                 "contributor; R and B, which compare readings at one target, "
+                                 "take the device's length-independent part and the "
+                                 "environmental variation error.")
+                      .arg(a.budget.conditions.length_mm, 0, 'f', 1));
+    Table budget{QStringLiteral("iso230-2-uncertainty"),
+                 {QStringLiteral("Contributor"), QStringLiteral("u µm"), QStringLiteral("From")},
+                 {}};
+    for (const iso::UncertaintyContribution& c : a.budget.contributions)
+        budget.rows.push_back({text(c.name), number(c.standard_um, 3), text(c.equation)});
+    doc.table(budget);
+    Table expanded{QStringLiteral("iso230-2-expanded-uncertainty"),
+                   {QStringLiteral("Value"), QStringLiteral("u_c µm"),
+                    QStringLiteral("U µm (k = %1)").arg(a.budget.coverage_k)},
+                   {}};
+    for (const iso::ParameterUncertainty& p : a.budget.parameters)
+        expanded.rows.push_back(
+            {text(p.parameter), number(p.combined_um, 3), number(p.expanded_um, 3)});
+    doc.table(expanded);
+    for (const QString& note : a.budget.notes)
+        doc.paragraph(QStringLiteral("Note: ") + note + QLatin1Char('.'));
+    for (const QString& note : a.notes)
+        doc.paragraph(QStringLiteral("Note: ") + note + QLatin1Char('.'));
+}
+
+/// The tolerance of A, for the lines on the ISO 230-2 plot.
+std::optional<double> accuracyTolerance(const PositioningSection& s) {
+    if (!s.acceptance) return std::nullopt;
+    for (const iso::Decision& d : s.acceptance->decisions)
+        if (d.parameter == QLatin1String("A")) return d.tolerance_um;
+    return std::nullopt;
 }
 
 QString stabilised(double time_s) {
@@ -96,6 +181,10 @@ void addIso230_2(ReportDocument& doc, const PositioningSection& s) {
                              text(QString::fromUtf8(quantity)), number(value, 3)});
     doc.table(axis);
     for (const QString& why : e.skipped) doc.paragraph(QStringLiteral("Not determined: ") + why);
+    if (s.acceptance) addAcceptance(doc, *s.acceptance);
+    if (!s.acceptance_error.isEmpty())
+        doc.paragraph(QStringLiteral("Acceptance not evaluated: ") + s.acceptance_error +
+                      QLatin1Char('.'));
     if (e.warnings.isEmpty()) doc.paragraph(QStringLiteral("Warnings of the evaluation: none."));
     for (const QString& w : e.warnings) doc.paragraph(QStringLiteral("Warning: ") + w);
     doc.plot({QStringLiteral("iso230-2"),
@@ -105,7 +194,8 @@ void addIso230_2(ReportDocument& doc, const PositioningSection& s) {
                   .arg(s.run_id),
               e,
               {},
-              {}});
+              {},
+              accuracyTolerance(s)});
     doc.subheading(QStringLiteral("Per target (µm)"));
     Table targets{
         QStringLiteral("iso230-2-targets"),
@@ -164,6 +254,7 @@ void addIso230_3(ReportDocument& doc, const DriftSection& s) {
                   QStringLiteral("Drift against time per target, run %1").arg(e.run_id),
                   {},
                   plot,
+                  {},
                   {}});
         Table table{
             QStringLiteral("iso230-3-") + e.run_id,
@@ -210,7 +301,7 @@ void addIso230_3(ReportDocument& doc, const DriftSection& s) {
                      std::isnan(e.stabilised_time_s)
                          ? QStringLiteral("not stabilised within the run")
                          : QStringLiteral("stabilised at %1 s").arg(e.stabilised_time_s)));
-        doc.plot({QStringLiteral("iso230-3-") + e.run_id, plot.title, {}, plot, {}});
+        doc.plot({QStringLiteral("iso230-3-") + e.run_id, plot.title, {}, plot, {}, {}});
         doc.table(table);
         for (const QString& note : e.notes) doc.paragraph(QStringLiteral("Note: ") + note);
     }

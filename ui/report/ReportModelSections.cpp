@@ -126,7 +126,8 @@ void addDiagnosis(ReportDocument& doc, const DiagnosisSection& s) {
                   title,
                   {},
                   {},
-                  residualMapPlot(r.base_residuals[k], title)});
+                  residualMapPlot(r.base_residuals[k], title),
+                  {}});
         if (k >= s.test_runs.size()) continue;
         const auto* adopted = diagnosis::adoptedResiduals(r, k);
         const QString curves = QStringLiteral("%1: verdict %2").arg(run, r.verdict);
@@ -135,6 +136,7 @@ void addDiagnosis(ReportDocument& doc, const DiagnosisSection& s) {
                   {},
                   beforeAfterPlot(s.test_runs[k], r.base_residuals[k], adopted,
                                   QStringLiteral("with ") + r.verdict, curves),
+                  {},
                   {}});
     }
 }
@@ -176,7 +178,7 @@ void addCompensation(ReportDocument& doc, const CompensationSection& s) {
             if (std::isfinite(p.*member)) c.x.push_back(p.target_mm), c.y.push_back(p.*member);
         if (!c.x.empty()) plot.curves.push_back(c);
     }
-    doc.plot({QStringLiteral("compensation-before-after"), plot.title, {}, plot, {}});
+    doc.plot({QStringLiteral("compensation-before-after"), plot.title, {}, plot, {}, {}});
     Table before{
         QStringLiteral("compensation-before-after"),
         {QStringLiteral("Target mm"), QStringLiteral("Before ↑ µm"), QStringLiteral("Before ↓ µm"),

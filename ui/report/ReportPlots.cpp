@@ -11,7 +11,7 @@ void paintPlot(const Plot& plot, QCPPainter& painter, QSize size) {
     if (plot.iso230_2) {
         Iso230_2Plot widget;
         widget.resize(size);
-        widget.show(*plot.iso230_2);
+        widget.show(*plot.iso230_2, plot.accuracy_tolerance_um);
         widget.render(&painter, size.width(), size.height());
         return;
     }

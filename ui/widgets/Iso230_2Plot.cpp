@@ -3,6 +3,7 @@
 #include <qcustomplot.h>
 
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 namespace driftlab::ui {
@@ -33,7 +34,8 @@ void Iso230_2Plot::render(QCPPainter* painter, int width, int height) {
     m_plot->toPainter(painter, width, height);
 }
 
-void Iso230_2Plot::show(const iso::Evaluation& evaluation) {
+void Iso230_2Plot::show(const iso::Evaluation& evaluation,
+                        std::optional<double> accuracyTolerance_um) {
     m_plot->clearPlottables();
     const double k = evaluation.settings.coverage_factor;
     struct Direction {
@@ -95,6 +97,22 @@ void Iso230_2Plot::show(const iso::Evaluation& evaluation) {
         high->setBrush(QColor(0x80, 0x80, 0x80, 40));
         high->setChannelFillGraph(low);
         high->setName(tr("span of x̄ ± %1s (A)").arg(k));
+        if (accuracyTolerance_um) {
+            const double centre_um = (*std::max_element(upper.begin(), upper.end()) +
+                                      *std::min_element(lower.begin(), lower.end())) /
+                                     2;
+            const QVector<double> ends{x.front(), x.back()};
+            for (const double side : {-1.0, 1.0}) {
+                QCPGraph* line = m_plot->addGraph();
+                const double y_um = centre_um + side * *accuracyTolerance_um / 2;
+                line->setData(ends, {y_um, y_um}, true);
+                line->setPen(QPen(QColor(0x20, 0x90, 0x40), 1.5, Qt::DashLine));
+                if (side < 0)
+                    line->removeFromLegend();
+                else
+                    line->setName(tr("tolerance of A: %1 µm").arg(*accuracyTolerance_um));
+            }
+        }
     }
     m_plot->rescaleAxes();
     m_plot->xAxis->scaleRange(1.06, m_plot->xAxis->range().center());

@@ -4,6 +4,7 @@
 // factor, 2 by default).
 
 #include <QWidget>
+#include <optional>
 
 #include "core/iso/Iso230_2.h"
 
@@ -17,7 +18,10 @@ class Iso230_2Plot : public QWidget {
 public:
     explicit Iso230_2Plot(QWidget* parent = nullptr);
 
-    void show(const iso::Evaluation& evaluation);
+    /// With `accuracyTolerance_um`, two dashed lines T apart centred on the
+    /// span of x̄ ± k·s: A is within its tolerance when the band fits between them.
+    void show(const iso::Evaluation& evaluation,
+              std::optional<double> accuracyTolerance_um = std::nullopt);
     void clear();
     int graphCount() const;
     /// Draws the figure shown into `painter` at width × height (a PDF page
