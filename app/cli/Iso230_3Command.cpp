@@ -2,7 +2,10 @@
 // moving feed-axis run, each probe of a spindle or ETVE run (docs/iso230-3.md).
 #include <QJsonArray>
 
+#include "app/cli/AcceptanceOption.h"
 #include "app/cli/CliCommon.h"
+#include "core/iso/AcceptanceJson.h"
+#include "core/iso/DriftAcceptance.h"
 #include "core/iso/Iso230_3.h"
 
 namespace driftlab::cli {
@@ -220,8 +223,10 @@ int iso230_3Command(const QStringList& args) {
         QStringLiteral("Spindle runs: distance between the two x (and two y) probes along the "
                        "mandrel; gives tilts A and B (none without it)."),
         QStringLiteral("L")};
+    const QCommandLineOption specOption = acceptanceSpecOption();
     parseArguments(parser, args,
-                   campaignSourceOptions() << runOption << window << tolerance << distance,
+                   campaignSourceOptions()
+                       << runOption << window << tolerance << distance << specOption,
                    campaignSourceArguments());
     iso::DriftSettings settings;
     settings.window_s = positiveNumberOption(parser, window);
@@ -229,6 +234,7 @@ int iso230_3Command(const QStringList& args) {
     if (parser.isSet(distance)) settings.probe_distance_mm = positiveNumberOption(parser, distance);
 
     const Campaign campaign = loadCampaignSource(parser);
+    const auto spec = acceptanceSpecification(parser, campaign);
     // Chosen before anything is printed: a bad --run leaves stdout empty.
     const std::vector<const Run*> chosen = chooseRuns(campaign, parser.value(runOption));
     QJsonArray runs;
@@ -243,18 +249,32 @@ int iso230_3Command(const QStringList& args) {
     for (const Run* run : chosen) {
         const QString label = QStringLiteral("run %1 (%2)").arg(run->id, toString(run->kind));
         QJsonObject o;
+        iso::DriftFigures figures;
         if (hasAxisDrift(*run)) {
             const iso::AxisDriftEvaluation e = iso::evaluateAxisDrift(*run, settings);
             if (!e.ok()) throw CliError(e.error);
             printWarnings(e.warnings);
             if (!json) printLine(QString()), printAxis(e, label);
             o = axisJson(e);
+            figures = iso::driftFigures(e);
         } else {
             const iso::ProbeDriftEvaluation e = iso::evaluateProbeDrift(campaign, *run, settings);
             if (!e.ok()) throw CliError(e.error);
             printWarnings(e.warnings);
             if (!json) printLine(QString()), printProbes(e, label);
             o = probesJson(e);
+            figures = iso::driftFigures(e);
+        }
+        if (spec) {
+            const auto decisions = iso::driftDecisions(*spec, campaign.machine.axis, figures);
+            o[QStringLiteral("acceptance")] =
+                QJsonObject{{QStringLiteral("decision_rule"), iso::decisionRuleText()},
+                            {QStringLiteral("decisions"), iso::decisionsJson(decisions)}};
+            if (!json && !decisions.empty()) {
+                printLine(QStringLiteral("acceptance of the drift figures (%1):")
+                              .arg(iso::decisionRuleText()));
+                for (const QString& line : iso::decisionsText(decisions)) printLine(line);
+            }
         }
         o[QStringLiteral("run")] = run->id;
         o[QStringLiteral("kind")] = toString(run->kind);

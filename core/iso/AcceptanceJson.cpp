@@ -47,6 +47,39 @@ QString temperatureLine(const char* what, const std::optional<TemperatureSummary
 
 }  // namespace
 
+QString decisionRuleText() {
+    return QStringLiteral(
+        "ISO 14253-1: PASS when value + U ≤ tolerance, FAIL when value − U > "
+        "tolerance, otherwise NOT PROVEN");
+}
+
+QJsonArray decisionsJson(const std::vector<Decision>& decisions) {
+    QJsonArray array;
+    for (const Decision& d : decisions)
+        array.append(QJsonObject{{QStringLiteral("parameter"), d.parameter},
+                                 {QStringLiteral("value_um"), number(d.value_um)},
+                                 {QStringLiteral("expanded_uncertainty_um"), d.expanded_um},
+                                 {QStringLiteral("tolerance_um"), d.tolerance_um},
+                                 {QStringLiteral("margin_um"), number(d.margin_um)},
+                                 {QStringLiteral("verdict"), toString(d.verdict)}});
+    return array;
+}
+
+QStringList decisionsText(const std::vector<Decision>& decisions) {
+    QStringList lines{
+        QStringLiteral("  value         result µm      U µm  tolerance µm   margin µm  "
+                       "verdict")};
+    for (const Decision& d : decisions)
+        lines << QStringLiteral("  %1 %2 %3 %4 %5  %6")
+                     .arg(d.parameter, -11)
+                     .arg(d.value_um, 12, 'f', 3)
+                     .arg(d.expanded_um, 9, 'f', 3)
+                     .arg(d.tolerance_um, 13, 'f', 3)
+                     .arg(d.margin_um, 11, 'f', 3)
+                     .arg(toString(d.verdict));
+    return lines;
+}
+
 QJsonObject acceptanceJson(const PositioningAcceptance& a) {
     QJsonArray contributions;
     for (const UncertaintyContribution& c : a.budget.contributions)
@@ -61,14 +94,6 @@ QJsonObject acceptanceJson(const PositioningAcceptance& a) {
             {QStringLiteral("contributors"), QJsonArray::fromStringList(p.contributors)},
             {QStringLiteral("combined_um"), p.combined_um},
             {QStringLiteral("expanded_um"), p.expanded_um}};
-    QJsonArray decisions;
-    for (const Decision& d : a.decisions)
-        decisions.append(QJsonObject{{QStringLiteral("parameter"), d.parameter},
-                                     {QStringLiteral("value_um"), number(d.value_um)},
-                                     {QStringLiteral("expanded_uncertainty_um"), d.expanded_um},
-                                     {QStringLiteral("tolerance_um"), d.tolerance_um},
-                                     {QStringLiteral("margin_um"), number(d.margin_um)},
-                                     {QStringLiteral("verdict"), toString(d.verdict)}});
     const UncertaintyConditions& c = a.budget.conditions;
     return {
         {QStringLiteral("run"), a.run_id},
@@ -94,11 +119,9 @@ QJsonObject acceptanceJson(const PositioningAcceptance& a) {
                      {QStringLiteral("contributions"), contributions},
                      {QStringLiteral("parameters"), parameters},
                      {QStringLiteral("notes"), QJsonArray::fromStringList(a.budget.notes)}}},
-        {QStringLiteral("decision_rule"),
-         QStringLiteral("ISO 14253-1: PASS when value + U ≤ tolerance, FAIL when value − U > "
-                        "tolerance, otherwise NOT PROVEN")},
+        {QStringLiteral("decision_rule"), decisionRuleText()},
         {QStringLiteral("verdict"), toString(a.overall())},
-        {QStringLiteral("decisions"), decisions},
+        {QStringLiteral("decisions"), decisionsJson(a.decisions)},
         {QStringLiteral("notes"), QJsonArray::fromStringList(a.notes)}};
 }
 

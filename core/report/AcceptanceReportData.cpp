@@ -2,6 +2,7 @@
 
 #include <QJsonValue>
 
+#include "core/iso/DriftAcceptance.h"
 #include "core/iso/PositioningRuns.h"
 #include "core/report/ReportAnalyses.h"
 
@@ -90,20 +91,32 @@ PositioningSection positioning(const Campaign& campaign, const ReportOptions& op
 
 DriftSection drift(const Campaign& campaign, const ReportOptions& options) {
     DriftSection s;
+    QString error;
+    const auto spec =
+        options.acceptance ? options.acceptance : iso::campaignAcceptance(campaign, &error);
+    const auto decide = [&](const QString& run, const iso::DriftFigures& figures) {
+        if (spec)
+            if (auto d = iso::driftDecisions(*spec, campaign.machine.axis, figures); !d.empty())
+                s.decisions[run] = std::move(d);
+    };
     for (const Run& run : campaign.runs) {
         if (run.kind == RunKind::Moving && !run.positioning.empty()) {
             iso::AxisDriftEvaluation e = iso::evaluateAxisDrift(run, options.drift_settings);
-            if (e.ok())
+            if (e.ok()) {
+                decide(run.id, iso::driftFigures(e));
                 s.axis_runs.push_back(std::move(e));
-            else
+            } else {
                 s.errors << e.error;
+            }
         } else if (run.kind == RunKind::Spindle || run.kind == RunKind::Etve) {
             iso::ProbeDriftEvaluation e =
                 iso::evaluateProbeDrift(campaign, run, options.drift_settings);
-            if (e.ok())
+            if (e.ok()) {
+                decide(run.id, iso::driftFigures(e));
                 s.probe_runs.push_back(std::move(e));
-            else
+            } else {
                 s.errors << e.error;
+            }
         }
     }
     if (s.axis_runs.empty())

@@ -7,6 +7,7 @@
 #include <QString>
 #include <QStringList>
 #include <functional>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -67,6 +68,8 @@ struct DriftSection {
     std::vector<iso::AxisDriftEvaluation> axis_runs;
     std::vector<iso::ProbeDriftEvaluation> probe_runs;
     QStringList errors;  ///< runs that could not be evaluated, and why
+    /// By run id: the drift figures against the specification's tolerances.
+    std::map<QString, std::vector<iso::Decision>> decisions;
 };
 
 struct ModelMatrix {

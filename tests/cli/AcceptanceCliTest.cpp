@@ -11,6 +11,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
+#include <cmath>
 
 #include "tests/support/BundleTestSupport.h"
 #include "tests/support/CliRunner.h"
@@ -127,6 +128,35 @@ TEST(AcceptanceCli, reportStatesPassFailAndNotProvenWithTheBudget) {
          {"PASS", "NOT PROVEN", "FAIL", "Environment and 20 °C", "Uncertainty budget",
           "environmental variation error", "Normalised to 20 °C", "T_bed"})
         EXPECT_TRUE(text.contains(QString::fromUtf8(phrase))) << phrase;
+}
+
+TEST(AcceptanceCli, driftFiguresOfEachRunAreDecidedToo) {
+    const CliResult r = runCli({QStringLiteral("iso230-3"), exampleBundlePath(),
+                                QStringLiteral("--spec"), kSpec, QStringLiteral("--json")});
+    ASSERT_EQ(r.exitCode, 0) << r.err.constData();
+    bool spindle = false;
+    for (const QJsonValue& run : json(r).value(QStringLiteral("runs")).toArray()) {
+        const QJsonObject o = run.toObject();
+        if (o.value(QStringLiteral("run")).toString() != QLatin1String("SP1")) continue;
+        spindle = true;
+        const QJsonArray decisions = o.value(QStringLiteral("acceptance"))
+                                         .toObject()
+                                         .value(QStringLiteral("decisions"))
+                                         .toArray();
+        ASSERT_EQ(decisions.size(), 1);  // the example specifies max_drift only
+        const QJsonObject d = decisions.first().toObject();
+        // The largest |drift| of the spindle's probes, against 25 µm with
+        // U = 2·√((0.2/2)² + (1.5/(2√3))²) = 0.8888 µm.
+        double largest = 0;
+        for (const QJsonValue& p : o.value(QStringLiteral("probes")).toArray())
+            largest = std::max(
+                largest, std::abs(p.toObject().value(QStringLiteral("max_drift_um")).toDouble()));
+        EXPECT_NEAR(d.value(QStringLiteral("value_um")).toDouble(), largest, 1e-6);
+        EXPECT_NEAR(d.value(QStringLiteral("expanded_uncertainty_um")).toDouble(), 0.8888, 1e-4);
+        EXPECT_EQ(d.value(QStringLiteral("verdict")).toString(),
+                  largest + 0.8888 <= 25 ? QStringLiteral("PASS") : QStringLiteral("NOT PROVEN"));
+    }
+    EXPECT_TRUE(spindle);
 }
 
 TEST(AcceptanceCli, aCampaignCarriesItsOwnSpecification) {

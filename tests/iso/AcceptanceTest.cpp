@@ -10,6 +10,7 @@
 
 #include "core/iso/AcceptanceSpecification.h"
 #include "core/iso/ConformanceDecision.h"
+#include "core/iso/DriftAcceptance.h"
 #include "core/iso/MeasurementUncertainty.h"
 #include "core/iso/PositioningAcceptance.h"
 #include "core/iso/ReferenceTemperature.h"
@@ -294,6 +295,33 @@ TEST(PositioningAcceptance, takesTheEnvironmentalVariationErrorFromTheEtveRun) {
     // 1770 s window is 1740 s of samples · 1 µm/h = 0.48333 µm (windows end on a sample).
     EXPECT_NEAR(result.budget.conditions.eve_um, 1740.0 / 3600, 1e-9);
     EXPECT_TRUE(result.budget.conditions.eve_source.contains(QStringLiteral("E1")));
+}
+
+TEST(DriftAcceptance, decidesTheLargestDriftAndRangeWithTheUncertaintyOfOneTarget) {
+    ProbeDriftEvaluation e;
+    e.probes.resize(2);
+    e.probes[0].drift.max_drift_um = -7.5;  // the largest magnitude, with its sign
+    e.probes[0].drift.range_um = 8;
+    e.probes[1].drift.max_drift_um = 3;
+    e.probes[1].drift.range_um = 9.5;
+    const DriftFigures figures = driftFigures(e);
+    EXPECT_DOUBLE_EQ(figures.max_drift_um, 7.5);
+    EXPECT_DOUBLE_EQ(figures.drift_range_um, 9.5);
+    AcceptanceSpecification spec;
+    spec.uncertainty.device_um = 0.4;  // u = 0.2
+    spec.uncertainty.eve_um = 1.5;     // u = 1.5/(2√3) = 0.43301
+    // U = 2·√(0.2² + 0.43301²) = 2·0.47697 = 0.95394 µm
+    EXPECT_NEAR(driftExpandedUncertainty_um(spec.uncertainty), 0.95394, 1e-5);
+    spec.axes[QStringLiteral("Z")].iso230_3_um = {{QStringLiteral("max_drift"), 8},
+                                                  {QStringLiteral("drift_range"), 10}};
+    EXPECT_TRUE(driftDecisions(spec, QStringLiteral("X"), figures).empty());
+    const auto decisions = driftDecisions(spec, QStringLiteral("Z"), figures);
+    ASSERT_EQ(decisions.size(), 2u);
+    EXPECT_EQ(decisions[0].parameter, QStringLiteral("max_drift"));
+    EXPECT_EQ(decisions[0].verdict, Verdict::NotProven);  // 7.5 + 0.95 > 8
+    EXPECT_EQ(decisions[1].verdict, Verdict::NotProven);  // 9.5 + 0.95 > 10
+    spec.axes[QStringLiteral("Z")].iso230_3_um[QStringLiteral("drift_range")] = 11;
+    EXPECT_EQ(driftDecisions(spec, QStringLiteral("Z"), figures)[1].verdict, Verdict::Pass);
 }
 
 // --- the specification file ---------------------------------------------------

@@ -89,6 +89,25 @@ void addAcceptance(ReportDocument& doc, const iso::PositioningAcceptance& a) {
         doc.paragraph(QStringLiteral("Note: ") + note + QLatin1Char('.'));
 }
 
+/// The drift figures of a run against their tolerances, when it has any.
+void addDriftVerdicts(ReportDocument& doc, const DriftSection& s, const QString& run) {
+    const auto found = s.decisions.find(run);
+    if (found == s.decisions.end()) return;
+    Table table{
+        QStringLiteral("iso230-3-verdicts-") + run,
+        {QStringLiteral("Figure"), QStringLiteral("Result µm"), QStringLiteral("U µm"),
+         QStringLiteral("Tolerance µm"), QStringLiteral("Margin µm"), QStringLiteral("Verdict")},
+        {}};
+    for (const iso::Decision& d : found->second)
+        table.rows.push_back({text(d.parameter), number(d.value_um, 3), number(d.expanded_um, 3),
+                              number(d.tolerance_um, 3), number(d.margin_um, 3),
+                              text(iso::toString(d.verdict))});
+    doc.paragraph(QStringLiteral("Run %1 against the specification (ISO 14253-1, U from the "
+                                 "device's length-independent part and the EVE):")
+                      .arg(run));
+    doc.table(table);
+}
+
 /// The tolerance of A, for the lines on the ISO 230-2 plot.
 std::optional<double> accuracyTolerance(const PositioningSection& s) {
     if (!s.acceptance) return std::nullopt;
@@ -268,6 +287,7 @@ void addIso230_3(ReportDocument& doc, const DriftSection& s) {
                  number(t.drift.max_drift_time_s, 0), number(t.drift.range_um, 3),
                  number(t.drift.final_drift_um, 3), text(stabilised(t.drift.stabilised_time_s))});
         doc.table(table);
+        addDriftVerdicts(doc, s, e.run_id);
     }
     doc.subheading(QStringLiteral("Spindle and ETVE runs"));
     if (!s.probe_not_applicable.isEmpty()) doc.paragraph(s.probe_not_applicable + QLatin1Char('.'));
@@ -303,6 +323,7 @@ void addIso230_3(ReportDocument& doc, const DriftSection& s) {
                          : QStringLiteral("stabilised at %1 s").arg(e.stabilised_time_s)));
         doc.plot({QStringLiteral("iso230-3-") + e.run_id, plot.title, {}, plot, {}, {}});
         doc.table(table);
+        addDriftVerdicts(doc, s, e.run_id);
         for (const QString& note : e.notes) doc.paragraph(QStringLiteral("Note: ") + note);
     }
 }
