@@ -222,6 +222,16 @@ int compensateCommand(const QStringList& args) {
         if (!why.isEmpty()) throw CliError(QStringLiteral("--") + why, 2);
     }
 
+    // The active table is read first: a file that cannot be used stops the
+    // command before the campaign is loaded.
+    ActiveTableRead active;
+    if (parser.isSet(activeTable)) {
+        const QString path = parser.value(activeTable);
+        active = readActiveTable(readActiveTableFile(path), writeFile ? formatName : QString(),
+                                 settings.sign, path);
+        if (!active.ok()) throw CliError(QStringLiteral("--active-table: ") + active.error);
+    }
+
     // A push is recorded in the --db store: open it for writing from the start.
     Campaign campaign =
         loadCampaignSource(parser, plan ? db::StoreAccess::ReadWrite : db::StoreAccess::ReadOnly);
@@ -259,12 +269,8 @@ int compensateCommand(const QStringList& args) {
     if (!built.ok()) throw CliError(source + QStringLiteral(": ") + built.error);
     QStringList warnings = evaluation.warnings + built.warnings;
     std::optional<RecompensationResult> recompensated;
-    ActiveTableRead active;
     if (parser.isSet(activeTable)) {
         const QString path = parser.value(activeTable);
-        active = readActiveTable(readActiveTableFile(path), writeFile ? formatName : QString(),
-                                 settings.sign, path);
-        if (!active.ok()) throw CliError(QStringLiteral("--active-table: ") + active.error);
         recompensated = recompensate(active.table, built.table, limits, settings.max_points);
         if (!recompensated->ok())
             throw CliError(QStringLiteral("active table %1 + residual of %2: %3")

@@ -134,3 +134,18 @@ TEST(CompensateOptionsCli, activeTablePlusTheResidualShowsTheChangePerPoint) {
     EXPECT_EQ(limited.exitCode, 1);
     EXPECT_TRUE(reason(limited.err).contains("(max value)")) << limited.err.constData();
 }
+
+// LinuxCNC would stop reading at the comment and run with half a table: the
+// file is refused, naming the line, and nothing is written.
+TEST(CompensateOptionsCli, anActiveTableLinuxCncWouldTruncateIsRefused) {
+    QTemporaryDir dir;
+    const QString active = dir.filePath("active.comp"), next = dir.filePath("next.comp");
+    writeFile(active, "0.0000 0.0010 0.0010\n; measured cold\n700.0000 0.0020 0.0020\n");
+    const CliResult r = compensateWithOptions(
+        {"--format", "linuxcnc-type1", "--out", next, "--active-table", active});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(reason(r.err), "driftlab-cli compensate: --active-table: " + active.toUtf8() +
+                                 ":2: '; measured cold' is not 'nominal second third' (LinuxCNC "
+                                 "would stop reading the table here)");
+    EXPECT_FALSE(QFile::exists(next));
+}
