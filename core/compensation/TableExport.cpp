@@ -2,7 +2,6 @@
 
 #include "core/compensation/CsvExport.h"
 #include "core/compensation/FanucExport.h"
-#include "core/compensation/FormatOptions.h"
 #include "core/compensation/HeidenhainExport.h"
 #include "core/compensation/LinuxCncExport.h"
 #include "core/compensation/SinumerikExport.h"
