@@ -1,16 +1,23 @@
 // compensate: a pitch-error compensation table from a run's positioning
 // readings (the cold geometric error, ISO 230-2 mean deviations), written for
 // a controller (docs/compensation.md, docs/cli.md).
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
+#include <QJsonObject>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "app/cli/CliCommon.h"
 #include "app/cli/CommandTable.h"
 #include "app/cli/CompensationPush.h"
 #include "app/cli/FlaggedSamples.h"
 #include "app/cli/ThermalProfile.h"
+#include "core/compensation/ActiveTableRead.h"
+#include "core/compensation/FormatOptions.h"
+#include "core/compensation/Recompensation.h"
 #include "core/compensation/TableExport.h"
 #include "db/ModelTrustJson.h"
 
@@ -32,6 +39,40 @@ QJsonArray uncertaintyJson(const CompensationTable& table) {
 QString umWithUnit(double value) {
     return std::isfinite(value) ? QString::number(value, 'f', 3) + QStringLiteral(" µm")
                                 : QStringLiteral("n/a");
+}
+
+/// The change of every point against the active table, in the sign the
+/// file holds (`sign`).
+QJsonArray changesJson(const RecompensationResult& r, ValueSign sign) {
+    QJsonArray points;
+    for (const PointChange& c : r.changes) {
+        QJsonObject point{{QStringLiteral("position_mm"), c.position_mm},
+                          {QStringLiteral("old_um"), signedValue(c.old_plus_um, sign)},
+                          {QStringLiteral("new_um"), signedValue(c.new_plus_um, sign)},
+                          {QStringLiteral("change_um"), signedValue(c.changePlusUm(), sign)}};
+        if (r.table.bidirectional) {
+            point[QStringLiteral("old_minus_um")] = signedValue(c.old_minus_um, sign);
+            point[QStringLiteral("new_minus_um")] = signedValue(c.new_minus_um, sign);
+            point[QStringLiteral("change_minus_um")] = signedValue(c.changeMinusUm(), sign);
+        }
+        points.append(point);
+    }
+    return points;
+}
+
+double largestChangeUm(const RecompensationResult& r) {
+    double largest = 0;
+    for (const PointChange& c : r.changes)
+        largest = std::max({largest, std::abs(c.changePlusUm()), std::abs(c.changeMinusUm())});
+    return largest;
+}
+
+QByteArray readActiveTableFile(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw CliError(
+            QStringLiteral("--active-table: cannot read %1: %2").arg(path, file.errorString()));
+    return file.readAll();
 }
 
 }  // namespace
@@ -85,11 +126,27 @@ int compensateCommand(const QStringList& args) {
         QStringLiteral("magnification"),
         QStringLiteral("Fanuc pitch error compensation magnification, parameter 3623 (default 1)."),
         QStringLiteral("N"), QStringLiteral("1")};
+    const QCommandLineOption sign{
+        QStringLiteral("sign"),
+        QStringLiteral("Values as the correction (added to the command, = -error) or the error "
+                       "(actual - target); default: the format's own convention."),
+        QStringLiteral("correction|error")};
+    const QCommandLineOption values{
+        QStringLiteral("values"),
+        QStringLiteral("Absolute values, or incremental (the change from the previous point); "
+                       "default: the format's own."),
+        QStringLiteral("absolute|incremental")};
+    const QCommandLineOption activeTable{
+        QStringLiteral("active-table"),
+        QStringLiteral("The table that was active during the measurement (the format's own file "
+                       "or DriftLab CSV): the run's residual is added to it."),
+        QStringLiteral("FILE")};
     parseArguments(parser, args,
                    campaignSourceOptions()
                        << format << out << runOption << spacing << points << start << end
-                       << bidirectional << maxValue << maxStep << axis << magnification
-                       << thermalProfileOptions() << keepFlaggedOption() << pushOptions(),
+                       << bidirectional << maxValue << maxStep << axis << magnification << sign
+                       << values << activeTable << thermalProfileOptions() << keepFlaggedOption()
+                       << pushOptions(),
                    campaignSourceArguments());
 
     // A file, a push, or both; the push options are checked before any work.
@@ -121,6 +178,34 @@ int compensateCommand(const QStringList& args) {
     if (parser.isSet(start)) settings.start_mm = numberOption(parser, start);
     if (parser.isSet(end)) settings.end_mm = numberOption(parser, end);
     settings.bidirectional = parser.isSet(bidirectional);
+    if (parser.isSet(sign)) {
+        settings.sign = parseSign(parser.value(sign));
+        if (!settings.sign)
+            throw CliError(
+                QStringLiteral("--sign: '%1' is not correction or error").arg(parser.value(sign)),
+                2);
+    }
+    if (parser.isSet(values)) {
+        settings.values = parseMode(parser.value(values));
+        if (!settings.values)
+            throw CliError(QStringLiteral("--values: '%1' is not absolute or incremental")
+                               .arg(parser.value(values)),
+                           2);
+    }
+    // A push carries corrections in the register map's own layout.
+    if ((settings.sign || settings.values) && (!writeFile || isTemperatureLineFormat(formatName)))
+        throw CliError(QStringLiteral("--sign and --values say how a table file holds its values: "
+                                      "give --format F (a table format) and --out FILE"),
+                       2);
+    if (writeFile && !isTemperatureLineFormat(formatName)) {
+        const QString why =
+            checkFormatOptions(formatName, settings.sign, settings.values, settings.bidirectional);
+        if (!why.isEmpty()) throw CliError(why, 2);
+    }
+    if (parser.isSet(activeTable) && writeFile && isTemperatureLineFormat(formatName))
+        throw CliError(QStringLiteral("--active-table updates a table, not the line of --format %1")
+                           .arg(formatName),
+                       2);
     Limits limits;
     limits.max_value_um = positiveNumberOption(parser, maxValue);
     limits.max_step_um = positiveNumberOption(parser, maxStep);
@@ -137,11 +222,22 @@ int compensateCommand(const QStringList& args) {
         if (!why.isEmpty()) throw CliError(QStringLiteral("--") + why, 2);
     }
 
+    // The active table is read first: a file that cannot be used stops the
+    // command before the campaign is loaded.
+    ActiveTableRead active;
+    if (parser.isSet(activeTable)) {
+        const QString path = parser.value(activeTable);
+        active = readActiveTable(readActiveTableFile(path), writeFile ? formatName : QString(),
+                                 settings.sign, path);
+        if (!active.ok()) throw CliError(QStringLiteral("--active-table: ") + active.error);
+    }
+
     // A push is recorded in the --db store: open it for writing from the start.
     Campaign campaign =
         loadCampaignSource(parser, plan ? db::StoreAccess::ReadWrite : db::StoreAccess::ReadOnly);
     // Only the model of the thermal profile reads sensor samples.
     if (wantsThermalProfile(parser)) leaveOutFlaggedSamples(parser, campaign);
+    if (campaign.screw) settings.screw_lead_mm = std::max(campaign.screw->lead_mm, 0.0);
     const Run& run = choosePositioningRun(campaign, parser.value(runOption));
     QString source = QStringLiteral("run %1 of %2").arg(run.id, campaign.name);
     const iso::Evaluation evaluation = iso::evaluate(iso::readingsOf(run));
@@ -163,12 +259,32 @@ int compensateCommand(const QStringList& args) {
         source += QStringLiteral(" + thermal error of ") + thermal->description;
     }
     if (lineFormat) return writeTemperatureLine(parser, *thermal, formatName, source);
-    const TableResult built =
-        buildTable(evaluation, settings, limits, thermal ? thermal->error_um : ErrorProfile{},
-                   thermal ? thermal->uncertainty_um : ErrorProfile{});
+    // With an active table the run measured the residual: the limits apply
+    // to the sum, not to the residual alone.
+    const double none = std::numeric_limits<double>::infinity();
+    const TableResult built = buildTable(
+        evaluation, settings, parser.isSet(activeTable) ? Limits{none, none, none} : limits,
+        thermal ? thermal->error_um : ErrorProfile{},
+        thermal ? thermal->uncertainty_um : ErrorProfile{});
     if (!built.ok()) throw CliError(source + QStringLiteral(": ") + built.error);
-    const CompensationTable& table = built.table;
     QStringList warnings = evaluation.warnings + built.warnings;
+    std::optional<RecompensationResult> recompensated;
+    if (parser.isSet(activeTable)) {
+        const QString path = parser.value(activeTable);
+        recompensated = recompensate(active.table, built.table, limits, settings.max_points);
+        if (!recompensated->ok())
+            throw CliError(QStringLiteral("active table %1 + residual of %2: %3")
+                               .arg(QFileInfo(path).fileName(), source, recompensated->error));
+        source = QStringLiteral("active table %1 + residual of %2")
+                     .arg(QFileInfo(path).fileName(), source);
+        warnings += recompensated->warnings;
+    }
+    const CompensationTable& table = recompensated ? recompensated->table : built.table;
+    // The sign the file holds (a push carries corrections).
+    const ValueSign writtenSign =
+        writeFile ? effectiveSign(formatName, settings.sign) : ValueSign::Correction;
+    const ValueMode writtenMode =
+        writeFile ? effectiveMode(formatName, settings.values) : ValueMode::Absolute;
     if (writeFile) {
         exportSettings.campaign_axis = campaign.machine.axis;
         const ExportResult exported = exportTable(table, formatName, exportSettings);
@@ -211,8 +327,21 @@ int compensateCommand(const QStringList& args) {
               thermal ? QJsonValue(db::validationJson(thermal->validation)) : QJsonValue()},
              {QStringLiteral("uncertainty_um"), uncertaintyJson(table)},
              {QStringLiteral("max_uncertainty_um"), jsonNumber(maxUncertainty)},
+             {QStringLiteral("value_sign"), signName(writtenSign)},
+             {QStringLiteral("values"), modeName(writtenMode)},
+             {QStringLiteral("active_table"),
+              recompensated
+                  ? QJsonValue(QJsonObject{
+                        {QStringLiteral("file"), parser.value(activeTable)},
+                        {QStringLiteral("layout"), active.layout},
+                        {QStringLiteral("points"), int(active.table.size())},
+                        {QStringLiteral("max_change_um"), largestChangeUm(*recompensated)},
+                        {QStringLiteral("changes"), changesJson(*recompensated, writtenSign)}})
+                  : QJsonValue()},
              {QStringLiteral("sign"),
-              QStringLiteral("correction = -(actual - target), added to the command")}});
+              writtenSign == ValueSign::Correction
+                  ? QStringLiteral("correction = -(actual - target), added to the command")
+                  : QStringLiteral("error = actual - target, which the controller subtracts")}});
         failIfNotApplied();
         return 0;
     }
@@ -232,6 +361,31 @@ int compensateCommand(const QStringList& args) {
                   .arg(umWithUnit(table.maxAbsCorrectionUm())));
     printLine(
         QStringLiteral("backlash: mean reversal B̄ = %1").arg(umWithUnit(table.mean_reversal_um)));
+    if (writeFile)
+        printLine(QStringLiteral("values written: %1, %2")
+                      .arg(writtenSign == ValueSign::Correction
+                               ? QStringLiteral("correction (−deviation)")
+                               : QStringLiteral("error (deviation, actual − target)"),
+                           modeName(writtenMode)));
+    if (recompensated) {
+        printLine(QStringLiteral("change from the active table (%1, %2 points; %3, µm):")
+                      .arg(active.layout)
+                      .arg(active.table.size())
+                      .arg(signName(writtenSign)));
+        printLine(table.bidirectional
+                      ? QStringLiteral("  position_mm      old+      new+   change+      old-      "
+                                       "new-   change-")
+                      : QStringLiteral("  position_mm       old       new    change"));
+        for (const PointChange& c : recompensated->changes) {
+            QString row = QStringLiteral("  %1").arg(c.position_mm, 11, 'f', 3);
+            for (double v : {c.old_plus_um, c.new_plus_um, c.changePlusUm()})
+                row += QStringLiteral("%1").arg(signedValue(v, writtenSign), 10, 'f', 3);
+            if (table.bidirectional)
+                for (double v : {c.old_minus_um, c.new_minus_um, c.changeMinusUm()})
+                    row += QStringLiteral("%1").arg(signedValue(v, writtenSign), 10, 'f', 3);
+            printLine(row);
+        }
+    }
     printLine(QStringLiteral("uncertainty of the corrections: up to %1 (95 %, k = 2: %2)")
                   .arg(umWithUnit(maxUncertainty),
                        thermal ? QStringLiteral("the cycles' scatter of the mean deviations and "

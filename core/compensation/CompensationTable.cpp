@@ -1,5 +1,7 @@
 #include "core/compensation/CompensationTable.h"
 
+#include "core/compensation/LeadAliasing.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -75,6 +77,8 @@ bool TableSettings::isValid(QString* why) const {
     else if (start_mm && end_mm && *start_mm >= *end_mm)
         reason =
             QStringLiteral("start %1 mm must lie below end %2 mm").arg(mm(*start_mm), mm(*end_mm));
+    else if (screw_lead_mm < 0 || !std::isfinite(screw_lead_mm))
+        reason = QStringLiteral("the screw lead must be a positive number of mm, or 0 (unknown)");
     else if (max_points < 2)
         reason = QStringLiteral("the maximum point count must be at least 2");
     if (why) *why = reason;
@@ -96,6 +100,22 @@ double CompensationTable::maxAbsCorrectionUm() const {
     for (std::size_t i = 0; i < size(); ++i)
         peak = std::max({peak, std::abs(correction_plus_um[i]), std::abs(correction_minus_um[i])});
     return peak;
+}
+
+std::vector<double> CompensationTable::writtenValuesUm(bool plus, ValueSign sign,
+                                                       ValueMode mode) const {
+    std::vector<double> values;
+    double previous = 0;
+    for (std::size_t i = 0; i < size(); ++i) {
+        const double correction = bidirectional
+                                      ? (plus ? correction_plus_um[i] : correction_minus_um[i])
+                                      : meanCorrectionUm(i);
+        const double value = signedValue(correction, sign);
+        values.push_back(
+            withoutNegativeZero(mode == ValueMode::Absolute ? value : value - previous));
+        previous = value;
+    }
+    return values;
 }
 
 QString validate(const CompensationTable& table, const Limits& limits, int max_points) {
@@ -261,6 +281,12 @@ TableResult buildTable(const iso::Evaluation& evaluation, const TableSettings& s
 
     CompensationTable& table = result.table;
     table.bidirectional = settings.bidirectional;
+    table.sign = settings.sign;
+    table.values = settings.values;
+    std::vector<double> measured_mm;
+    for (const TargetDeviation& t : targets) measured_mm.push_back(t.target_mm);
+    const QString aliasing = leadAliasingWarning(measured_mm, settings.screw_lead_mm);
+    if (!aliasing.isEmpty()) result.warnings << aliasing;
     table.mean_reversal_um = evaluation.axis.mean_reversal_um;
     for (std::size_t i = 0; i < count; ++i) {
         // start + i·spacing, not a running sum: no drift over 1000 points.

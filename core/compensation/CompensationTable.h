@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/compensation/TableOptions.h"
 #include "core/iso/Iso230_2.h"
 
 namespace driftlab::compensation {
@@ -35,6 +36,13 @@ struct TableSettings {
     bool bidirectional = false;
     /// The most points any format takes (formats refuse fewer themselves).
     int max_points = 1024;
+    /// How the values are written (--sign, --values); unset: the format's own
+    /// convention. Carried to the table for the exporters.
+    std::optional<ValueSign> sign;
+    std::optional<ValueMode> values;
+    /// The screw's lead (campaign screw.lead_mm); 0: unknown. Targets that all
+    /// sit at one phase of the lead alias its periodic error (a warning).
+    double screw_lead_mm = 0;
 
     bool isValid(QString* why) const;
 };
@@ -68,6 +76,10 @@ struct CompensationTable {
     /// directions) and the added thermal error's prediction interval, in
     /// quadrature. Empty for a table built from a controller's read-back.
     std::vector<double> uncertainty_um;
+    /// How an exporter writes the values; unset: the format's own convention.
+    /// The columns above hold corrections whatever these say.
+    std::optional<ValueSign> sign;
+    std::optional<ValueMode> values;
 
     std::size_t size() const { return position_mm.size(); }
     double spacing_mm() const {
@@ -79,6 +91,10 @@ struct CompensationTable {
     }
     /// The largest |correction| over both columns.
     double maxAbsCorrectionUm() const;
+    /// The + column (`plus`) or the − column as a file holds it: the mean of
+    /// both in a unidirectional table, turned into `sign`, and with
+    /// Incremental the change from the previous point (the first from 0).
+    std::vector<double> writtenValuesUm(bool plus, ValueSign sign, ValueMode mode) const;
 };
 
 /// What buildTable() gives: the table, or why there is none.

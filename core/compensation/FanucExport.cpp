@@ -1,5 +1,7 @@
 #include "core/compensation/FanucExport.h"
 
+#include "core/compensation/FormatOptions.h"
+
 namespace driftlab::compensation {
 namespace {
 
@@ -34,6 +36,8 @@ std::optional<FanucPitchData> fanucPitchData(const CompensationTable& table,
         result.error = why;
         return std::nullopt;
     }
+    result.error = checkFormatOptions(QStringLiteral("fanuc"), table.sign, table.values, false);
+    if (!result.ok()) return std::nullopt;
     if (table.bidirectional) {
         // Bidirectional pitch error compensation (3605#0, 3626, 3627) is an
         // option with its own data layout, not written yet.

@@ -2,6 +2,8 @@
 
 #include <QRegularExpression>
 
+#include "core/compensation/FormatOptions.h"
+
 namespace driftlab::compensation {
 namespace {
 
@@ -20,6 +22,9 @@ ExportResult exportHeidenhain(const CompensationTable& table, const HeidenhainSe
             QStringLiteral("'%1' is not a Heidenhain axis key (e.g. X)").arg(settings.axis);
         return result;
     }
+    result.error =
+        checkFormatOptions(QStringLiteral("heidenhain"), table.sign, table.values, false);
+    if (!result.ok()) return result;
     if (table.size() > std::size_t(kHeidenhainMaxRows)) {
         result.error = QStringLiteral(
                            "a Heidenhain .COM table takes at most %1 points; this table "
@@ -28,18 +33,17 @@ ExportResult exportHeidenhain(const CompensationTable& table, const HeidenhainSe
                            .arg(table.size());
         return result;
     }
+    const ValueSign sign = table.sign.value_or(ValueSign::Correction);
+    const std::vector<double> plus = table.writtenValuesUm(true, sign, ValueMode::Absolute);
+    const std::vector<double> minus = table.writtenValuesUm(false, sign, ValueMode::Absolute);
     QByteArray& text = result.text;
     text += "BEGIN " + settings.table_name.toUpper().toLatin1() + " MM\n";
     text += QByteArray("NR").leftJustified(kNumberWidth) +
             QByteArray("AXISPOS").leftJustified(kValueWidth) +
             settings.axis.toUpper().toLatin1().leftJustified(kValueWidth) + "BACKLASH\n";
     for (std::size_t i = 0; i < table.size(); ++i) {
-        const double value_mm =
-            (table.bidirectional ? table.correction_plus_um[i] : table.meanCorrectionUm(i)) / 1000;
-        const double backlash_mm =
-            table.bidirectional
-                ? (table.correction_minus_um[i] - table.correction_plus_um[i]) / 1000
-                : 0.0;
+        const double value_mm = plus[i] / 1000;
+        const double backlash_mm = table.bidirectional ? (minus[i] - plus[i]) / 1000 : 0.0;
         text += QByteArray::number(qulonglong(i)).leftJustified(kNumberWidth) +
                 signedFixed(table.position_mm[i], 4).leftJustified(kValueWidth) +
                 signedFixed(value_mm, 4).leftJustified(kValueWidth) + signedFixed(backlash_mm, 4) +

@@ -19,9 +19,9 @@ struct HeidenhainSettings {
 
 /// `BEGIN name MM`, a column header `NR AXISPOS <axis> BACKLASH`, one row per
 /// point (mm, 4 decimals, explicit sign), `[END]`. The axis column holds the
-/// correction; BACKLASH holds, in a bidirectional table, the − column minus
-/// the + column, and 0 in a unidirectional one (the control's backlash
-/// parameter takes B̄).
+/// correction (with table.sign Error: the deviation); BACKLASH holds, in a bidirectional table, the
+/// − column minus the + column, and 0 in a unidirectional one (the control's backlash parameter
+/// takes B̄).
 ExportResult exportHeidenhain(const CompensationTable& table, const HeidenhainSettings& settings);
 
 }  // namespace driftlab::compensation

@@ -1,9 +1,17 @@
 #include "core/compensation/LinuxCncExport.h"
 
+#include "core/compensation/FormatOptions.h"
+
 namespace driftlab::compensation {
 
 ExportResult exportLinuxCnc(const CompensationTable& table, LinuxCncType type) {
     ExportResult result;
+    // The file type fixes the sign: type 0 holds nominal + error, type 1 the
+    // correction; an explicit other sign is refused, never silently flipped.
+    result.error = checkFormatOptions(
+        type == LinuxCncType::Type0 ? QStringLiteral("linuxcnc") : QStringLiteral("linuxcnc-type1"),
+        table.sign, table.values, false);
+    if (!result.ok()) return result;
     if (table.size() > std::size_t(kLinuxCncMaxRows)) {
         result.error = QStringLiteral(
                            "LinuxCNC takes at most %1 compensation rows per joint; "

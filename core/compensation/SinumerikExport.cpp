@@ -2,6 +2,8 @@
 
 #include <QRegularExpression>
 
+#include "core/compensation/FormatOptions.h"
+
 namespace driftlab::compensation {
 
 ExportResult exportSinumerik(const CompensationTable& table, const SinumerikSettings& settings) {
@@ -14,6 +16,8 @@ ExportResult exportSinumerik(const CompensationTable& table, const SinumerikSett
                            .arg(settings.axis);
         return result;
     }
+    result.error = checkFormatOptions(QStringLiteral("sinumerik"), table.sign, table.values, false);
+    if (!result.ok()) return result;
     if (table.bidirectional) {
         result.error = QStringLiteral(
             "Sinumerik export takes a unidirectional table: the backlash "
