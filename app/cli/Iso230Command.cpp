@@ -7,6 +7,7 @@
 
 #include "app/cli/AnalysisJson.h"
 #include "app/cli/CliCommon.h"
+#include "app/cli/StandardsOutput.h"
 #include "core/bundle/CsvTable.h"
 #include "core/domain/MessageText.h"
 #include "core/iso/Iso230_2.h"
@@ -111,7 +112,14 @@ int iso230Command(const QStringList& args) {
         QStringLiteral("With a BUNDLE or --db: the run to evaluate (default: the positioning run, "
                        "or the only run with positioning readings)."),
         QStringLiteral("R")};
-    parseArguments(parser, args, campaignSourceOptions() << edition << coverage << runOption,
+    const QCommandLineOption standardOption{
+        QStringLiteral("standard"),
+        QStringLiteral("Evaluate by NAME: iso230-2:2014 (default), iso230-2:2006, iso230-2:1997, "
+                       "gbt17421.2, jis-b0182; or all, every standard side by side "
+                       "(docs/standards.md)."),
+        QStringLiteral("NAME")};
+    parseArguments(parser, args,
+                   campaignSourceOptions() << edition << coverage << runOption << standardOption,
                    {QStringLiteral("CSV"),
                     QStringLiteral("Readings: a CSV file with columns target_mm, direction (+ "
                                    "or -), cycle, deviation_um (actual - target); or a campaign "
@@ -126,6 +134,8 @@ int iso230Command(const QStringList& args) {
             2);
     settings.edition = *year;
     settings.coverage_factor = positiveNumberOption(parser, coverage);
+    const StandardChoice choice =
+        chooseStandard(parser, standardOption, edition, coverage, settings);
 
     const QStringList positional = parser.positionalArguments();
     std::vector<iso::Reading> readings;
@@ -150,6 +160,9 @@ int iso230Command(const QStringList& args) {
         readings = iso::readingsOf(run);
     }
 
+    if (choice.all || choice.standard)
+        return evaluateByStandard(choice, readings, settings, source,
+                                  parser.isSet(QStringLiteral("json")));
     const iso::Evaluation result = iso::evaluate(readings, settings);
     if (!result.ok()) throw CliError(source + QStringLiteral(": ") + result.error);
     printWarnings(result.warnings);
