@@ -27,17 +27,6 @@ QString padLeft(const QString& text, int width) {
     return QString(std::max(0, width - displayWidth(text)), QLatin1Char(' ')) + text;
 }
 
-/// The parameters of all standards, each once, in the order they first appear.
-std::vector<const iso::StandardValue*> rowsOf(const iso::StandardsComparison& c) {
-    std::vector<const iso::StandardValue*> rows;
-    for (const iso::StandardEvaluation& e : c.evaluations)
-        for (const iso::StandardValue& v : e.values)
-            if (std::none_of(rows.begin(), rows.end(),
-                             [&](const iso::StandardValue* r) { return r->key == v.key; }))
-                rows.push_back(&v);
-    return rows;
-}
-
 QString countsText(const iso::StandardEvaluation& e) {
     return QStringLiteral("%1 targets, %2 cycles").arg(e.targets).arg(e.cycles);
 }
@@ -112,7 +101,7 @@ void printStandardsComparison(const iso::StandardsComparison& c, const QString& 
         header += padLeft(title, widths.back());
     }
     printLine(header);
-    for (const iso::StandardValue* row : rowsOf(c)) {
+    for (const iso::StandardValue* row : iso::comparisonRows(c)) {
         QString line = QStringLiteral("  ") + padRight(row->symbol, kSymbolWidth) +
                        padRight(row->meaning, kMeaningWidth);
         for (std::size_t i = 0; i < c.evaluations.size(); ++i) {

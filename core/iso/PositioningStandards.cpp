@@ -216,4 +216,14 @@ StandardsComparison compareStandards(const std::vector<Reading>& readings, const
     return comparison;
 }
 
+std::vector<const StandardValue*> comparisonRows(const StandardsComparison& comparison) {
+    std::vector<const StandardValue*> rows;
+    for (const StandardEvaluation& e : comparison.evaluations)
+        for (const StandardValue& v : e.values)
+            if (std::none_of(rows.begin(), rows.end(),
+                             [&](const StandardValue* r) { return r->key == v.key; }))
+                rows.push_back(&v);
+    return rows;
+}
+
 }  // namespace driftlab::iso

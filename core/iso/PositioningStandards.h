@@ -91,4 +91,8 @@ struct StandardsComparison {
 StandardsComparison compareStandards(const std::vector<Reading>& readings,
                                      const Settings& base = {});
 
+/// The rows of a comparison table: every key any standard defines, once, in
+/// the order the standards list them (pointing into `comparison`).
+std::vector<const StandardValue*> comparisonRows(const StandardsComparison& comparison);
+
 }  // namespace driftlab::iso

@@ -67,10 +67,12 @@ PositioningSection positioning(const Campaign& campaign, const ReportOptions& op
     PositioningSection s;
     s.run_id = positioningRun(campaign, options.positioning_run, &s.run_note, &s.not_applicable);
     if (!s.not_applicable.isEmpty()) return s;
-    s.evaluation =
-        iso::evaluate(iso::readingsOf(*campaign.findRun(s.run_id)), options.iso_settings);
+    const std::vector<iso::Reading> readings = iso::readingsOf(*campaign.findRun(s.run_id));
+    s.evaluation = iso::evaluate(readings, options.iso_settings);
     if (!s.evaluation.ok())
         s.not_applicable = QStringLiteral("run %1: %2").arg(s.run_id, s.evaluation.error);
+    else
+        s.standards = iso::compareStandards(readings, options.iso_settings);
     return s;
 }
 

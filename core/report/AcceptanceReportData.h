@@ -15,6 +15,7 @@
 #include "core/domain/Campaign.h"
 #include "core/iso/Iso230_2.h"
 #include "core/iso/Iso230_3.h"
+#include "core/iso/PositioningStandards.h"
 #include "core/models/ModelScore.h"
 #include "core/models/ThermalErrorData.h"
 
@@ -51,6 +52,8 @@ struct PositioningSection {
     QString run_id;
     QString run_note;  ///< how the run was chosen when it was not given
     iso::Evaluation evaluation;
+    /// The same readings by every positioning standard (docs/standards.md).
+    iso::StandardsComparison standards;
 };
 
 struct DriftSection {

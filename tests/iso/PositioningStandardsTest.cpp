@@ -139,6 +139,12 @@ TEST(PositioningStandards, comparisonEvaluatesEveryStandardAndWarnsOnce) {
         EXPECT_EQ(c.evaluations[i].targets, 3);
         EXPECT_EQ(c.evaluations[i].cycles, 5);
     }
+    // A table row per key, each once: ISO 230-2's twelve, in its order; JIS's
+    // B and R are among them.
+    QStringList keys;
+    for (const StandardValue* row : comparisonRows(c)) keys << row->key;
+    EXPECT_EQ(keys, (QStringList{"B", "B_mean", "R_up", "R_down", "R", "E_up", "E_down", "E", "M",
+                                 "A_up", "A_down", "A"}));
     // Two distinct warnings (three targets; the common swing), however many
     // standards raise them.
     EXPECT_EQ(c.warnings.size(), 2) << qPrintable(c.warnings.join(QLatin1Char('\n')));

@@ -1,6 +1,8 @@
 // Sections 1-3 of the acceptance report: the cover, ISO 230-2 and ISO 230-3.
 #include <cmath>
+#include <vector>
 
+#include "core/iso/PositioningStandards.h"
 #include "ui/report/ReportDocument.h"
 
 namespace driftlab::ui::report {
@@ -15,6 +17,37 @@ QString sign(Direction d) {
 QString stabilised(double time_s) {
     return std::isnan(time_s) ? QStringLiteral("not stabilised")
                               : QStringLiteral("%1 s").arg(time_s, 0, 'f', 0);
+}
+
+/// The same readings by every positioning standard, a column each: what a
+/// lab's laser software would print for each (docs/standards.md).
+void addStandardsCompared(ReportDocument& doc, const iso::StandardsComparison& c) {
+    if (!c.ok() || c.evaluations.empty()) return;
+    doc.subheading(QStringLiteral("Standards compared (µm)"));
+    Table table{QStringLiteral("iso230-2-standards"),
+                {QStringLiteral("Symbol"), QStringLiteral("Key"), QStringLiteral("Quantity")},
+                {}};
+    for (const iso::StandardEvaluation& e : c.evaluations)
+        table.header << iso::standardTitle(e.standard);
+    for (const iso::StandardValue* row : iso::comparisonRows(c)) {
+        std::vector<Cell> cells{text(row->symbol), text(row->key), text(row->meaning)};
+        for (const iso::StandardEvaluation& e : c.evaluations) {
+            const iso::StandardValue* v = e.value(row->key);
+            cells.push_back(v ? number(v->value_um, 3) : text(QStringLiteral("-")));
+        }
+        table.rows.push_back(std::move(cells));
+    }
+    doc.table(table);
+    QStringList definitions;
+    for (const iso::StandardEvaluation& e : c.evaluations)
+        definitions << iso::standardTitle(e.standard) + QStringLiteral(": ") + e.definitions;
+    doc.paragraph(QStringLiteral("\"-\": not defined by that standard. ") +
+                  definitions.join(QStringLiteral(". ")) + QLatin1Char('.'));
+    QStringList leftOut;
+    for (const iso::LeftOutStandard& s : iso::leftOutStandards())
+        leftOut << s.title + QStringLiteral(" (") + s.why + QLatin1Char(')');
+    doc.paragraph(QStringLiteral("Not evaluated: ") + leftOut.join(QStringLiteral("; ")) +
+                  QLatin1Char('.'));
 }
 
 }  // namespace
@@ -120,6 +153,7 @@ void addIso230_2(ReportDocument& doc, const PositioningSection& s) {
                                 number(t.reversal_um, 3), number(t.r_up_um, 3),
                                 number(t.r_down_um, 3), number(t.r_um, 3)});
     doc.table(targets);
+    addStandardsCompared(doc, s.standards);
 }
 
 void addIso230_3(ReportDocument& doc, const DriftSection& s) {
