@@ -81,7 +81,7 @@ const std::vector<Command>& commands() {
          QStringLiteral("What the physical model misses, the likely cause and the gain of "
                         "modelling it.")},
         {QStringLiteral("iso230-2"), iso230Command,
-         QStringLiteral("iso230-2 CSV [--edition 2014|2006|1997] [--run R]"),
+         QStringLiteral("iso230-2 CSV [--edition 2014|2006|1997] [--standard NAME|all] [--run R]"),
          QStringLiteral("ISO 230-2 evaluation of target_mm,direction,cycle,deviation_um rows "
                         "(a CSV file, or a run of a campaign): accuracy, repeatability, "
                         "reversal per target and for the axis.")},

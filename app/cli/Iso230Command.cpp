@@ -8,6 +8,7 @@
 #include "app/cli/AcceptanceOption.h"
 #include "app/cli/AnalysisJson.h"
 #include "app/cli/CliCommon.h"
+#include "app/cli/StandardsOutput.h"
 #include "core/bundle/CsvTable.h"
 #include "core/domain/MessageText.h"
 #include "core/iso/AcceptanceJson.h"
@@ -115,8 +116,15 @@ int iso230Command(const QStringList& args) {
                        "or the only run with positioning readings)."),
         QStringLiteral("R")};
     const QCommandLineOption specOption = acceptanceSpecOption();
+    const QCommandLineOption standardOption{
+        QStringLiteral("standard"),
+        QStringLiteral("Evaluate by NAME: iso230-2:2014 (default), iso230-2:2006, iso230-2:1997, "
+                       "gbt17421.2, jis-b0182; or all, every standard side by side "
+                       "(docs/standards.md)."),
+        QStringLiteral("NAME")};
     parseArguments(parser, args,
-                   campaignSourceOptions() << edition << coverage << runOption << specOption,
+                   campaignSourceOptions()
+                       << edition << coverage << runOption << specOption << standardOption,
                    {QStringLiteral("CSV"),
                     QStringLiteral("Readings: a CSV file with columns target_mm, direction (+ "
                                    "or -), cycle, deviation_um (actual - target); or a campaign "
@@ -131,6 +139,8 @@ int iso230Command(const QStringList& args) {
             2);
     settings.edition = *year;
     settings.coverage_factor = positiveNumberOption(parser, coverage);
+    const StandardChoice choice =
+        chooseStandard(parser, standardOption, edition, coverage, settings);
 
     const QStringList positional = parser.positionalArguments();
     std::vector<iso::Reading> readings;
@@ -166,6 +176,9 @@ int iso230Command(const QStringList& args) {
         }
     }
 
+    if (choice.all || choice.standard)
+        return evaluateByStandard(choice, acceptance ? acceptance->readings : readings, settings,
+                                  source, parser.isSet(QStringLiteral("json")));
     const iso::Evaluation result =
         acceptance ? acceptance->evaluation : iso::evaluate(readings, settings);
     if (!result.ok()) throw CliError(source + QStringLiteral(": ") + result.error);

@@ -109,7 +109,8 @@ PositioningAcceptance evaluateAcceptance(const Campaign& campaign, const Run& ru
     const auto readings =
         readingsAt20C(campaign, run, spec.temperature, materials, &result.normalisation, &error);
     if (!readings) return fail(error);
-    result.evaluation = evaluate(*readings, settings);
+    result.readings = *readings;
+    result.evaluation = evaluate(result.readings, settings);
     if (!result.evaluation.ok()) return fail(result.evaluation.error);
 
     UncertaintyConditions conditions;

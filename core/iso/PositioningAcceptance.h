@@ -23,7 +23,8 @@ struct PositioningAcceptance {
     QString axis;
     TestEnvironment environment;
     Normalisation normalisation;
-    Evaluation evaluation;  ///< of the readings at 20 °C (as normalisation says)
+    std::vector<Reading> readings;  ///< at 20 °C, as normalisation says
+    Evaluation evaluation;          ///< of `readings`
     UncertaintyBudget budget;
     std::vector<Decision> decisions;  ///< one per toleranced value, in parameter order
     QStringList notes;

@@ -69,7 +69,8 @@ PositioningSection positioning(const Campaign& campaign, const ReportOptions& op
     s.run_id = positioningRun(campaign, options.positioning_run, &s.run_note, &s.not_applicable);
     if (!s.not_applicable.isEmpty()) return s;
     const Run& run = *campaign.findRun(s.run_id);
-    s.evaluation = iso::evaluate(iso::readingsOf(run), options.iso_settings);
+    std::vector<iso::Reading> readings = iso::readingsOf(run);
+    s.evaluation = iso::evaluate(readings, options.iso_settings);
     QString error;
     const auto spec =
         options.acceptance ? options.acceptance : iso::campaignAcceptance(campaign, &error);
@@ -77,7 +78,9 @@ PositioningSection positioning(const Campaign& campaign, const ReportOptions& op
         iso::PositioningAcceptance acceptance =
             iso::evaluateAcceptance(campaign, run, *spec, options.iso_settings);
         if (acceptance.ok()) {
+            // Every standard then compares the same readings at 20 °C.
             s.evaluation = acceptance.evaluation;
+            readings = acceptance.readings;
             s.acceptance = std::move(acceptance);
         } else {
             error = acceptance.error;
@@ -86,6 +89,8 @@ PositioningSection positioning(const Campaign& campaign, const ReportOptions& op
     s.acceptance_error = error;
     if (!s.evaluation.ok())
         s.not_applicable = QStringLiteral("run %1: %2").arg(s.run_id, s.evaluation.error);
+    else
+        s.standards = iso::compareStandards(readings, options.iso_settings);
     return s;
 }
 

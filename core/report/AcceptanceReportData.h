@@ -17,6 +17,7 @@
 #include "core/iso/Iso230_2.h"
 #include "core/iso/Iso230_3.h"
 #include "core/iso/PositioningAcceptance.h"
+#include "core/iso/PositioningStandards.h"
 #include "core/models/ModelScore.h"
 #include "core/models/ThermalErrorData.h"
 
@@ -59,6 +60,8 @@ struct PositioningSection {
     /// With a specification: environment, budget and verdicts.
     std::optional<iso::PositioningAcceptance> acceptance;
     QString acceptance_error;  ///< why a specification could not be applied
+    /// The same readings by every positioning standard (docs/standards.md).
+    iso::StandardsComparison standards;
 };
 
 struct DriftSection {

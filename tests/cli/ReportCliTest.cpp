@@ -130,6 +130,26 @@ TEST(ReportCli, pdfAndCsvOfASimulatedCampaignAgreeWithTheCommandsTheyReport) {
     for (const auto& row : csvRows(csv + QStringLiteral("/iso230-2-axis.csv")))
         EXPECT_DOUBLE_EQ(row.at("Value µm").toDouble(), iso[row.at("Key")].toDouble())
             << qPrintable(row.at("Key"));
+    // The standards compared are the columns of `iso230-2 --standard all`:
+    // a value where the standard defines it, "-" where it does not.
+    const QJsonObject standards =
+        jsonOf(runCli({"iso230-2", bundle, "--run", run, "--standard", "all", "--json"}));
+    const auto compared = csvRows(csv + QStringLiteral("/iso230-2-standards.csv"));
+    EXPECT_EQ(compared.size(), kAxisKeys.size());
+    ASSERT_EQ(standards["standards"].toArray().size(), 5);
+    for (const QJsonValue& each : standards["standards"].toArray()) {
+        const QString title = each.toObject()["standard"].toString();
+        const QJsonObject values = each.toObject()["values"].toObject();
+        for (const auto& row : compared) {
+            ASSERT_TRUE(row.count(title)) << "no column " << qPrintable(title);
+            const QString& cell = row.at(title);
+            if (values.contains(row.at("Key")))
+                EXPECT_DOUBLE_EQ(cell.toDouble(), values[row.at("Key")].toDouble())
+                    << qPrintable(title) << " " << qPrintable(row.at("Key"));
+            else
+                EXPECT_EQ(cell, QStringLiteral("-")) << qPrintable(title);
+        }
+    }
     const auto findings = csvRows(csv + QStringLiteral("/diagnosis-findings.csv"));
     const QJsonArray jsonFindings = diagnosis["findings"].toArray();
     ASSERT_EQ(findings.size(), std::size_t(jsonFindings.size()));

@@ -2,7 +2,9 @@
 #include <cmath>
 #include <optional>
 #include <utility>
+#include <vector>
 
+#include "core/iso/PositioningStandards.h"
 #include "ui/report/ReportDocument.h"
 
 namespace driftlab::ui::report {
@@ -121,6 +123,37 @@ QString stabilised(double time_s) {
                               : QStringLiteral("%1 s").arg(time_s, 0, 'f', 0);
 }
 
+/// The same readings by every positioning standard, a column each: what a
+/// lab's laser software would print for each (docs/standards.md).
+void addStandardsCompared(ReportDocument& doc, const iso::StandardsComparison& c) {
+    if (!c.ok() || c.evaluations.empty()) return;
+    doc.subheading(QStringLiteral("Standards compared (µm)"));
+    Table table{QStringLiteral("iso230-2-standards"),
+                {QStringLiteral("Symbol"), QStringLiteral("Key"), QStringLiteral("Quantity")},
+                {}};
+    for (const iso::StandardEvaluation& e : c.evaluations)
+        table.header << iso::standardTitle(e.standard);
+    for (const iso::StandardValue* row : iso::comparisonRows(c)) {
+        std::vector<Cell> cells{text(row->symbol), text(row->key), text(row->meaning)};
+        for (const iso::StandardEvaluation& e : c.evaluations) {
+            const iso::StandardValue* v = e.value(row->key);
+            cells.push_back(v ? number(v->value_um, 3) : text(QStringLiteral("-")));
+        }
+        table.rows.push_back(std::move(cells));
+    }
+    doc.table(table);
+    QStringList definitions;
+    for (const iso::StandardEvaluation& e : c.evaluations)
+        definitions << iso::standardTitle(e.standard) + QStringLiteral(": ") + e.definitions;
+    doc.paragraph(QStringLiteral("\"-\": not defined by that standard. ") +
+                  definitions.join(QStringLiteral(". ")) + QLatin1Char('.'));
+    QStringList leftOut;
+    for (const iso::LeftOutStandard& s : iso::leftOutStandards())
+        leftOut << s.title + QStringLiteral(" (") + s.why + QLatin1Char(')');
+    doc.paragraph(QStringLiteral("Not evaluated: ") + leftOut.join(QStringLiteral("; ")) +
+                  QLatin1Char('.'));
+}
+
 }  // namespace
 
 void addCover(ReportDocument& doc, const AcceptanceReportData& data) {
@@ -229,6 +262,7 @@ void addIso230_2(ReportDocument& doc, const PositioningSection& s) {
                                 number(t.reversal_um, 3), number(t.r_up_um, 3),
                                 number(t.r_down_um, 3), number(t.r_um, 3)});
     doc.table(targets);
+    addStandardsCompared(doc, s.standards);
 }
 
 void addIso230_3(ReportDocument& doc, const DriftSection& s) {
