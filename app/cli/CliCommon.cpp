@@ -219,26 +219,9 @@ void writeFileAtomically(const QString& path, const QByteArray& text) {
 }
 
 const Run& choosePositioningRun(const Campaign& campaign, const QString& wanted) {
-    QString id = wanted;
-    if (id.isEmpty()) {
-        const iso::DefaultRun chosen = iso::defaultPositioningRun(campaign);
-        if (chosen.id.isEmpty())
-            throw CliError(
-                chosen.choices.isEmpty() ? chosen.why : chosen.why + QStringLiteral(" with --run"),
-                chosen.choices.isEmpty() ? 1 : 2);
-        id = chosen.id;
-    }
-    QStringList ids;
-    for (const Run& run : campaign.runs) ids << run.id;
-    for (const Run& run : campaign.runs)
-        if (run.id == id) {
-            if (run.positioning.empty())
-                throw CliError(QStringLiteral("run %1 has no positioning readings").arg(id));
-            return run;
-        }
-    throw CliError(QStringLiteral("--run: no run '%1' in the campaign (runs: %2)")
-                       .arg(id, ids.join(QStringLiteral(", "))),
-                   2);
+    const iso::PositioningRunChoice choice = iso::choosePositioningRun(campaign, wanted);
+    if (!choice.run) throw CliError(choice.error, choice.usage ? 2 : 1);
+    return *choice.run;
 }
 
 QString umText(double value_um) {

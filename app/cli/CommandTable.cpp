@@ -13,6 +13,7 @@ int compareCommand(const QStringList& args);
 int diagnoseCommand(const QStringList& args);
 int iso230Command(const QStringList& args);
 int iso230_3Command(const QStringList& args);
+int historyCommand(const QStringList& args);
 int compensateCommand(const QStringList& args);
 int liveCommand(const QStringList& args);
 int healthCommand(const QStringList& args);
@@ -89,6 +90,10 @@ const std::vector<Command>& commands() {
          QStringLiteral("iso230-3 BUNDLE [--run R] [--window-s W] [--tolerance-um D]"),
          QStringLiteral("ISO 230-3 thermal drift: per target of a moving run, per probe of a "
                         "spindle or ETVE run, the maximum drift, when, and when it stabilised.")},
+        {QStringLiteral("history"), historyCommand,
+         QStringLiteral("history --db FILE --machine M --axis X [--png FILE]"),
+         QStringLiteral("Every campaign of one machine axis in a store, oldest first: its ISO "
+                        "230-2 figures (A, E, R, B, M), ISO 230-3 drift and their change.")},
         {QStringLiteral("compensate"), compensateCommand,
          QStringLiteral("compensate BUNDLE --format F --out FILE | --push modbus://HOST:PORT "
                         "[--spacing MM | --points N] [--bidirectional]"),

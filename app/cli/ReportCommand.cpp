@@ -10,6 +10,7 @@
 #include "app/cli/CliCommon.h"
 #include "app/cli/FlaggedSamples.h"
 #include "core/report/AcceptanceReportData.h"
+#include "db/MachineHistoryStore.h"
 #include "ui/report/ReportFolders.h"
 #include "ui/report/ReportPdf.h"
 
@@ -65,6 +66,19 @@ QJsonObject keyFigures(const report::AcceptanceReportData& data) {
     return json;
 }
 
+/// The other campaigns of the machine axis in the store, for the report's
+/// machine history; a store that cannot give it costs the section, not the report.
+void addMachineHistory(const QCommandLineParser& parser, const Campaign& campaign,
+                       report::AcceptanceReportData& data) {
+    auto store = openSourceStore(parser, db::StoreAccess::ReadOnly);
+    history::HistorySettings settings{data.positioning.evaluation.settings, {}};
+    QString error;
+    data.history.history =
+        db::machineHistory(*store, campaign.machine.name, campaign.machine.axis, settings, &error);
+    data.history.campaign_id = parser.value(QStringLiteral("campaign")).toLongLong();
+    if (!data.history.history) printWarnings({QStringLiteral("no machine history: ") + error});
+}
+
 }  // namespace
 
 int reportCommand(const QStringList& args) {
@@ -117,9 +131,10 @@ int reportCommand(const QStringList& args) {
     options.progress = [](double f) { return printProgress(QStringLiteral("analysing"), f); };
     QElapsedTimer timer;
     timer.start();
-    const report::AcceptanceReportData data = report::buildReportData(campaign, options);
+    report::AcceptanceReportData data = report::buildReportData(campaign, options);
     endProgressLine();
     if (!data.error.isEmpty()) throw CliError(data.error);
+    if (parser.isSet(QStringLiteral("db"))) addMachineHistory(parser, campaign, data);
     const double dataMs = timer.nsecsElapsed() * 1e-6;
 
     timer.restart();

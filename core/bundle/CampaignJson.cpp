@@ -325,7 +325,12 @@ Run readRun(ObjectReader r) {
                  {QStringLiteral("feed_mm_min")},
                  {QStringLiteral("range_mm")},
                  {QStringLiteral("description")},
-                 {QStringLiteral("procedure")}},
+                 {QStringLiteral("procedure")},
+                 // When the run took place, kept in `extra` (docs/history.md).
+                 {QStringLiteral("date")},
+                 {QStringLiteral("started_at")},
+                 {QStringLiteral("start_date")},
+                 {QStringLiteral("created_at")}},
                 OtherKeys::Warned);
     run.id = r.string(QStringLiteral("id"), true);
     if (!isValidIdentifier(run.id))
@@ -388,7 +393,12 @@ Campaign campaignFromJson(const QByteArray& json, const QString& fileName, QStri
                  {QStringLiteral("travel_mm"), KeyUse::Defaulted, absent},
                  {QStringLiteral("interferometer"), KeyUse::Defaulted, absent},
                  {QStringLiteral("channels"), KeyUse::Required},
-                 {QStringLiteral("runs"), KeyUse::Required}},
+                 {QStringLiteral("runs"), KeyUse::Required},
+                 // When the campaign took place, kept in `extra` (docs/history.md).
+                 {QStringLiteral("date")},
+                 {QStringLiteral("started_at")},
+                 {QStringLiteral("start_date")},
+                 {QStringLiteral("created_at")}},
                 OtherKeys::Kept);
     c.name = r.string(QStringLiteral("name"), true);
 

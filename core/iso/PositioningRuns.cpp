@@ -30,4 +30,31 @@ DefaultRun defaultPositioningRun(const Campaign& campaign) {
     return result;
 }
 
+PositioningRunChoice choosePositioningRun(const Campaign& campaign, const QString& wanted) {
+    PositioningRunChoice choice;
+    QString id = wanted;
+    if (id.isEmpty()) {
+        const DefaultRun chosen = defaultPositioningRun(campaign);
+        if (chosen.id.isEmpty()) {
+            choice.usage = !chosen.choices.isEmpty();
+            choice.error = choice.usage ? chosen.why + QStringLiteral(" with --run") : chosen.why;
+            return choice;
+        }
+        id = chosen.id;
+    }
+    if (const Run* run = campaign.findRun(id)) {
+        if (run->positioning.empty())
+            choice.error = QStringLiteral("run %1 has no positioning readings").arg(id);
+        else
+            choice.run = run;
+        return choice;
+    }
+    QStringList ids;
+    for (const Run& run : campaign.runs) ids << run.id;
+    choice.usage = true;
+    choice.error = QStringLiteral("--run: no run '%1' in the campaign (runs: %2)")
+                       .arg(id, ids.join(QStringLiteral(", ")));
+    return choice;
+}
+
 }  // namespace driftlab::iso

@@ -21,4 +21,15 @@ struct DefaultRun {
 };
 DefaultRun defaultPositioningRun(const Campaign& campaign);
 
+/// The run whose positioning readings `iso230-2`, `compensate` and the machine
+/// history evaluate: `wanted` (--run), else the default run above.
+struct PositioningRunChoice {
+    const Run* run = nullptr;  ///< null when there is no such run; `error` says why
+    QString error;
+    /// The error is the caller's to fix (a --run naming no run, several
+    /// candidates to choose from) rather than the campaign's lack of readings.
+    bool usage = false;
+};
+PositioningRunChoice choosePositioningRun(const Campaign& campaign, const QString& wanted);
+
 }  // namespace driftlab::iso

@@ -8,12 +8,14 @@
 #include <QStringList>
 #include <functional>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "core/compensation/CompensationTable.h"
 #include "core/diagnosis/Diagnosis.h"
 #include "core/domain/Campaign.h"
+#include "core/history/MachineHistory.h"
 #include "core/iso/Iso230_2.h"
 #include "core/iso/Iso230_3.h"
 #include "core/iso/PositioningAcceptance.h"
@@ -112,6 +114,15 @@ struct CompensationSection {
     double residual_peak_um = 0;  ///< largest |after| over the targets
 };
 
+/// Every campaign of the report's machine and axis in its store (docs/history.md),
+/// set by a caller that has the store: a bundle has no history.
+struct HistorySection {
+    std::optional<history::MachineHistory> history;
+    qint64 campaign_id = 0;  ///< the report's campaign in the store
+    /// The section is printed only where there is a trend to see.
+    bool shown() const { return history && history->entries.size() > 1; }
+};
+
 struct AcceptanceReportData {
     QString error;  ///< empty on success (and when cancelled)
     bool cancelled = false;
@@ -121,6 +132,7 @@ struct AcceptanceReportData {
     ModelSection models;
     DiagnosisSection diagnosis;
     CompensationSection compensation;
+    HistorySection history;
     bool ok() const { return error.isEmpty() && !cancelled; }
 };
 

@@ -8,6 +8,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableView>
 #include <QVBoxLayout>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "ui/shell/SelectedCampaignLoader.h"
 #include "ui/shell/Session.h"
 #include "ui/widgets/Iso230_2Plot.h"
+#include "ui/widgets/MachineHistoryView.h"
 
 namespace driftlab::ui {
 namespace {
@@ -57,6 +59,7 @@ Iso230_2Page::Iso230_2Page(Session& session, QWidget* parent)
       m_view(new QTableView(this)),
       m_model(new Iso230_2TargetModel(this)),
       m_plot(new Iso230_2Plot(this)),
+      m_history(new MachineHistoryView(this)),
       m_figures(new QGridLayout) {
     m_run->setMinimumContentsLength(6);
     m_edition->addItem(tr("ISO 230-2:2014"), QStringLiteral("2014"));
@@ -116,7 +119,11 @@ Iso230_2Page::Iso230_2Page(Session& session, QWidget* parent)
     layout->addLayout(settings);
     layout->addWidget(m_message);
     layout->addWidget(m_warnings);
-    layout->addWidget(split, 1);
+    // The run's evaluation, and the same axis over every campaign of the store.
+    auto* tabs = new QTabWidget(this);
+    tabs->addTab(split, tr("Run"));
+    tabs->addTab(m_history, tr("Machine history"));
+    layout->addWidget(tabs, 1);
 
     connect(m_run, &QComboBox::currentIndexChanged, this, &Iso230_2Page::evaluateRun);
     connect(m_edition, &QComboBox::currentIndexChanged, this, &Iso230_2Page::evaluateRun);
@@ -125,6 +132,7 @@ Iso230_2Page::Iso230_2Page(Session& session, QWidget* parent)
     connect(m_loader, &SelectedCampaignLoader::cleared, this, [this] {
         m_campaign.reset();
         m_run->clear();
+        m_history->clear();
         m_message->setText(tr("Select a campaign with a positioning run in the campaign tree."));
     });
     connect(m_loader, &SelectedCampaignLoader::loadingStarted, this,
@@ -151,6 +159,7 @@ void Iso230_2Page::onLoaded(const LoadedCampaign& loaded) {
     if (!loaded.campaign) return showError(tr("Loading the campaign: %1").arg(loaded.error));
     m_campaign = loaded.campaign;
     fillPositioningRunBox(m_run, *m_campaign);
+    m_history->load(m_session.storePath(), m_campaign->machine.name, m_campaign->machine.axis);
     evaluateRun();
 }
 

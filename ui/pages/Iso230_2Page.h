@@ -23,6 +23,7 @@ class SelectedCampaignLoader;
 
 class Iso230_2Plot;
 class Iso230_2TargetModel;
+class MachineHistoryView;
 class Session;
 
 class Iso230_2Page : public QWidget {
@@ -36,6 +37,8 @@ public:
     QDoubleSpinBox* coverageBox() const { return m_coverage; }
     Iso230_2TargetModel* targetModel() const { return m_model; }
     Iso230_2Plot* plot() const { return m_plot; }
+    /// The "Machine history" tab: every stored campaign of the campaign's machine axis.
+    MachineHistoryView* historyView() const { return m_history; }
     /// The axis figure labelled `key` (B, B_mean, R_up, …, A, as in
     /// `iso230-2 --json`), as shown; empty for an unknown key.
     QString figureText(const QString& key) const;
@@ -60,6 +63,7 @@ private:
     QTableView* m_view;
     Iso230_2TargetModel* m_model;
     Iso230_2Plot* m_plot;
+    MachineHistoryView* m_history;
     QGridLayout* m_figures;
     std::vector<std::pair<QString, QLabel*>> m_figureLabels;
     SelectedCampaignLoader* m_loader;

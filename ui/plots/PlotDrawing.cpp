@@ -84,6 +84,16 @@ void drawCurves(QCustomPlot& p, const CurvePlot& plot) {
         p.graph(i)->setPen(edge->pen());
         p.graph(i)->removeFromLegend();
     }
+    if (plot.xIsDate) {
+        auto dates = QSharedPointer<QCPAxisTickerDateTime>::create();
+        dates->setDateTimeFormat(QStringLiteral("yyyy-MM-dd"));
+        dates->setDateTimeSpec(Qt::UTC);
+        p.xAxis->setTicker(dates);
+        // A history has a few campaigns far apart: each one is a point.
+        for (int i = 0; i < n; ++i)
+            p.graph(i)->setScatterStyle(
+                QCPScatterStyle(QCPScatterStyle::ssCircle, p.graph(i)->pen().color(), 7));
+    }
     p.legend->setVisible(n > 1 && n <= 16);
     p.legend->setFont(QFont(QStringLiteral("sans"), 8));
     // Thermal errors grow with position and time: the top left is the free corner.

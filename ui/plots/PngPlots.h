@@ -26,6 +26,8 @@ struct Curve {
 struct CurvePlot {
     QString title, xLabel, yLabel;
     std::vector<Curve> curves;
+    /// x is seconds since 1970-01-01 UTC, labelled as dates (a machine's history).
+    bool xIsDate = false;
 };
 
 /// Write the plot as PNG; false and `error` if it cannot be written or the data is inconsistent.

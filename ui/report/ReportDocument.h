@@ -64,7 +64,8 @@ struct ReportDocument {
     std::vector<const Table*> tables() const;
 };
 
-/// The whole report, sections 1-6 in order (docs/report.md).
+/// The whole report, sections 1-6 in order, and the machine history where there is one
+/// (docs/report.md).
 ReportDocument reportDocument(const driftlab::report::AcceptanceReportData& data);
 
 // The sections, one builder each (ReportIsoSections.cpp, ReportModelSections.cpp).
@@ -74,5 +75,8 @@ void addIso230_3(ReportDocument& doc, const driftlab::report::DriftSection& s);
 void addModels(ReportDocument& doc, const driftlab::report::ModelSection& s);
 void addDiagnosis(ReportDocument& doc, const driftlab::report::DiagnosisSection& s);
 void addCompensation(ReportDocument& doc, const driftlab::report::CompensationSection& s);
+/// Only when the store holds more than one campaign of the machine and axis
+/// (ReportHistorySection.cpp).
+void addMachineHistory(ReportDocument& doc, const driftlab::report::HistorySection& s);
 
 }  // namespace driftlab::ui::report

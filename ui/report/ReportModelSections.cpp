@@ -224,6 +224,7 @@ ReportDocument reportDocument(const AcceptanceReportData& data) {
     addModels(doc, data.models);
     addDiagnosis(doc, data.diagnosis);
     addCompensation(doc, data.compensation);
+    addMachineHistory(doc, data.history);
     return doc;
 }
 
