@@ -27,6 +27,7 @@ void addMachineHistory(ReportDocument& doc, const driftlab::report::HistorySecti
                   .arg(h.machine, h.axis),
               {},
               historyTrendPlot(h),
+              {},
               {}});
     Table table{QStringLiteral("machine-history"),
                 {QStringLiteral("Date"), QStringLiteral("Campaign"), QStringLiteral("Run"),
