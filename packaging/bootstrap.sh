@@ -109,8 +109,9 @@ run_main_job() {
         --effect forced_convection=0.05 --effect frame_growth=3 --db "$out/driftlab.sqlite" \
         2>"$out/hidden-run.err")
     "$cli" diagnose --db "$out/driftlab.sqlite" --campaign "$hidden" --plots "$out/plots/diagnosis"
-    log "main job 9/18: ISO 230-2 evaluation of S1's interferometer cycles (a moving state: its thermal drift inflates R, as the warning says)"
-    "$cli" iso230-2 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
+    log "main job 9/18: ISO 230-2 acceptance of S1's interferometer cycles against resources/examples/x-axis-acceptance.json: readings at 20 °C, uncertainty budget, PASS / FAIL / NOT PROVEN by ISO 14253-1 (a moving state: its thermal drift inflates R, as the warning says)"
+    "$cli" iso230-2 --db "$out/driftlab.sqlite" --campaign "$id" --run S1 \
+        --spec "$root/resources/examples/x-axis-acceptance.json"
     log "main job 10/18: ISO 230-3 thermal drift of S1's targets and the spindle run's probes: maximum, when, time to stabilise"
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run S1
     "$cli" iso230-3 --db "$out/driftlab.sqlite" --campaign "$id" --run SP1

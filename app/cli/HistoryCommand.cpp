@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/cli/CliCommon.h"
+#include "app/cli/IsoOptions.h"
 #include "db/MachineHistoryStore.h"
 #include "ui/plots/HistoryPlot.h"
 
@@ -160,14 +161,8 @@ int historyCommand(const QStringList& args) {
     const QCommandLineOption axis{QStringLiteral("axis"),
                                   QStringLiteral("The axis, as campaign.json machine.axis."),
                                   QStringLiteral("X")};
-    const QCommandLineOption edition{
-        QStringLiteral("edition"),
-        QStringLiteral("ISO 230-2 edition named in the output: 2014 (default), 2006 or 1997."),
-        QStringLiteral("YEAR"), QStringLiteral("2014")};
-    const QCommandLineOption coverage{
-        QStringLiteral("coverage-factor"),
-        QStringLiteral("k of the expanded quantities (default 2: R↑_i = 4s↑_i, A from x̄ ± 2s)."),
-        QStringLiteral("K"), QStringLiteral("2")};
+    const QCommandLineOption edition = isoEditionOption();
+    const QCommandLineOption coverage = isoCoverageOption();
     const QCommandLineOption png{QStringLiteral("png"),
                                  QStringLiteral("Also write the trend of A, E, R, B, M against "
                                                 "the campaign date as a PNG file."),
@@ -175,13 +170,7 @@ int historyCommand(const QStringList& args) {
     parseArguments(parser, args, {dbOption, machine, axis, edition, coverage, png},
                    Arguments{{}, {}, {}, {dbOption, machine, axis}});
     history::HistorySettings settings;
-    const auto year = iso::editionFromString(parser.value(edition));
-    if (!year)
-        throw CliError(
-            QStringLiteral("--edition: '%1' is not 2014, 2006 or 1997").arg(parser.value(edition)),
-            2);
-    settings.iso.edition = *year;
-    settings.iso.coverage_factor = positiveNumberOption(parser, coverage);
+    settings.iso = isoSettings(parser);
 
     auto store = openSourceStore(parser, db::StoreAccess::ReadOnly);
     QString error;

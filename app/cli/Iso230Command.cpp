@@ -5,9 +5,9 @@
 #include <QJsonArray>
 #include <cmath>
 
-#include "app/cli/AcceptanceOption.h"
 #include "app/cli/AnalysisJson.h"
 #include "app/cli/CliCommon.h"
+#include "app/cli/IsoOptions.h"
 #include "app/cli/StandardsOutput.h"
 #include "core/bundle/CsvTable.h"
 #include "core/domain/MessageText.h"
@@ -102,14 +102,8 @@ void printEvaluation(const iso::Evaluation& e, const QString& source) {
 
 int iso230Command(const QStringList& args) {
     QCommandLineParser parser;
-    const QCommandLineOption edition{
-        QStringLiteral("edition"),
-        QStringLiteral("ISO 230-2 edition named in the output: 2014 (default), 2006 or 1997."),
-        QStringLiteral("YEAR"), QStringLiteral("2014")};
-    const QCommandLineOption coverage{
-        QStringLiteral("coverage-factor"),
-        QStringLiteral("k of the expanded quantities (default 2: R↑_i = 4s↑_i, A from x̄ ± 2s)."),
-        QStringLiteral("K"), QStringLiteral("2")};
+    const QCommandLineOption edition = isoEditionOption();
+    const QCommandLineOption coverage = isoCoverageOption();
     const QCommandLineOption runOption{
         QStringLiteral("run"),
         QStringLiteral("With a BUNDLE or --db: the run to evaluate (default: the positioning run, "
@@ -131,14 +125,7 @@ int iso230Command(const QStringList& args) {
                                    "bundle folder or .zip (its positioning.csv)."),
                     QStringLiteral("CSV (or BUNDLE, or --db FILE --campaign ID)"),
                     {}});
-    iso::Settings settings;
-    const auto year = iso::editionFromString(parser.value(edition));
-    if (!year)
-        throw CliError(
-            QStringLiteral("--edition: '%1' is not 2014, 2006 or 1997").arg(parser.value(edition)),
-            2);
-    settings.edition = *year;
-    settings.coverage_factor = positiveNumberOption(parser, coverage);
+    iso::Settings settings = isoSettings(parser);
     const StandardChoice choice =
         chooseStandard(parser, standardOption, edition, coverage, settings);
 

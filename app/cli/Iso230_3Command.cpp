@@ -2,8 +2,8 @@
 // moving feed-axis run, each probe of a spindle or ETVE run (docs/iso230-3.md).
 #include <QJsonArray>
 
-#include "app/cli/AcceptanceOption.h"
 #include "app/cli/CliCommon.h"
+#include "app/cli/IsoOptions.h"
 #include "core/iso/AcceptanceJson.h"
 #include "core/iso/DriftAcceptance.h"
 #include "core/iso/Iso230_3.h"

@@ -6,9 +6,9 @@
 #include <QFileInfo>
 #include <QJsonArray>
 
-#include "app/cli/AcceptanceOption.h"
 #include "app/cli/CliCommon.h"
 #include "app/cli/FlaggedSamples.h"
+#include "app/cli/IsoOptions.h"
 #include "core/report/AcceptanceReportData.h"
 #include "db/MachineHistoryStore.h"
 #include "ui/report/ReportFolders.h"

@@ -154,17 +154,7 @@ QStringList acceptanceText(const PositioningAcceptance& a) {
                      "acceptance by ISO 14253-1 (conformance proven when value + U ≤ "
                      "tolerance): %1")
                      .arg(toString(a.overall()));
-        lines << QStringLiteral(
-            "  value      result µm      U µm  tolerance µm   margin µm  "
-            "verdict");
-        for (const Decision& d : a.decisions)
-            lines << QStringLiteral("  %1 %2 %3 %4 %5  %6")
-                         .arg(d.parameter, -8)
-                         .arg(d.value_um, 12, 'f', 3)
-                         .arg(d.expanded_um, 9, 'f', 3)
-                         .arg(d.tolerance_um, 13, 'f', 3)
-                         .arg(d.margin_um, 11, 'f', 3)
-                         .arg(toString(d.verdict));
+        lines << decisionsText(a.decisions);
     }
     for (const QString& note : a.notes) lines << QStringLiteral("note: ") + note;
     return lines;

@@ -34,6 +34,29 @@ QString toString(Edition edition) {
     return QStringLiteral("ISO 230-2:%1").arg(editionYear(edition));
 }
 
+const std::vector<AxisValue>& axisValues() {
+    static const std::vector<AxisValue> values{
+        {"B", "B", "reversal error (max |B_i|)", &AxisResult::reversal_um},
+        {"B_mean", "B̄", "mean reversal error", &AxisResult::mean_reversal_um},
+        {"R_up", "R↑", "unidirectional repeatability ↑", &AxisResult::r_up_um},
+        {"R_down", "R↓", "unidirectional repeatability ↓", &AxisResult::r_down_um},
+        {"R", "R", "bidirectional repeatability", &AxisResult::r_um},
+        {"E_up", "E↑", "unidirectional systematic error ↑", &AxisResult::e_up_um},
+        {"E_down", "E↓", "unidirectional systematic error ↓", &AxisResult::e_down_um},
+        {"E", "E", "bidirectional systematic error", &AxisResult::e_um},
+        {"M", "M", "mean bidirectional positioning error", &AxisResult::m_um},
+        {"A_up", "A↑", "unidirectional accuracy ↑", &AxisResult::a_up_um},
+        {"A_down", "A↓", "unidirectional accuracy ↓", &AxisResult::a_down_um},
+        {"A", "A", "bidirectional accuracy", &AxisResult::a_um}};
+    return values;
+}
+
+double axisValue(const AxisResult& axis, const QString& key) {
+    for (const AxisValue& v : axisValues())
+        if (key == QLatin1String(v.key)) return axis.*v.value;
+    return kNotDetermined;
+}
+
 std::vector<Reading> readingsOf(const Run& run) {
     std::vector<Reading> readings;
     readings.reserve(run.positioning.size());

@@ -91,6 +91,18 @@ struct AxisResult {
     double a_um = kNotDetermined;       ///< A: over both directions together
 };
 
+/// One axis value as every output names it, in the order ISO 230-2 lists them.
+struct AxisValue {
+    const char* key;      ///< JSON key of `iso230-2 --json`: "A", "R_up", "B_mean"
+    const char* symbol;   ///< as printed: "A", "R↑", "B̄"
+    const char* meaning;  ///< "bidirectional accuracy"
+    double AxisResult::*value;
+};
+/// B, B̄, R↑, R↓, R, E↑, E↓, E, M, A↑, A↓, A.
+const std::vector<AxisValue>& axisValues();
+/// The value of `key` in `axis`; NaN for an unknown key.
+double axisValue(const AxisResult& axis, const QString& key);
+
 /// The result of evaluate(): the values, or why there are none.
 struct Evaluation {
     QString error;  ///< empty on success

@@ -19,17 +19,6 @@ Verdict PositioningAcceptance::overall() const {
     return Verdict::Pass;
 }
 
-double axisValue(const AxisResult& a, const QString& p) {
-    const std::pair<const char*, double> values[] = {
-        {"A", a.a_um},        {"A_up", a.a_up_um}, {"A_down", a.a_down_um},
-        {"E", a.e_um},        {"E_up", a.e_up_um}, {"E_down", a.e_down_um},
-        {"R", a.r_um},        {"R_up", a.r_up_um}, {"R_down", a.r_down_um},
-        {"B", a.reversal_um}, {"M", a.m_um}};
-    for (const auto& [key, value] : values)
-        if (p == QLatin1String(key)) return value;
-    return kNotDetermined;
-}
-
 namespace {
 
 ChannelRole driftRoleOf(const QString& axis) {

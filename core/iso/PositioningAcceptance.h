@@ -48,7 +48,4 @@ PositioningAcceptance evaluateAcceptance(const Campaign& campaign, const Run& ru
                                          const AcceptanceSpecification& specification,
                                          const Settings& settings = {});
 
-/// The value of an ISO 230-2 axis parameter by its JSON key ("A", "R_up", …).
-double axisValue(const AxisResult& axis, const QString& parameter);
-
 }  // namespace driftlab::iso

@@ -43,18 +43,11 @@ void copyCounts(const Evaluation& from, StandardEvaluation& to) {
 
 /// The twelve axis values of ISO 230-2, as `iso230-2 --json` names them.
 std::vector<StandardValue> isoValues(const AxisResult& a) {
-    return {{"B", "B", "reversal error (max |B_i|)", a.reversal_um},
-            {"B_mean", "B̄", "mean reversal error", a.mean_reversal_um},
-            {"R_up", "R↑", "unidirectional repeatability ↑", a.r_up_um},
-            {"R_down", "R↓", "unidirectional repeatability ↓", a.r_down_um},
-            {"R", "R", "bidirectional repeatability", a.r_um},
-            {"E_up", "E↑", "unidirectional systematic error ↑", a.e_up_um},
-            {"E_down", "E↓", "unidirectional systematic error ↓", a.e_down_um},
-            {"E", "E", "bidirectional systematic error", a.e_um},
-            {"M", "M", "mean bidirectional positioning error", a.m_um},
-            {"A_up", "A↑", "unidirectional accuracy ↑", a.a_up_um},
-            {"A_down", "A↓", "unidirectional accuracy ↓", a.a_down_um},
-            {"A", "A", "bidirectional accuracy", a.a_um}};
+    std::vector<StandardValue> values;
+    for (const AxisValue& v : axisValues())
+        values.push_back({QString::fromUtf8(v.key), QString::fromUtf8(v.symbol),
+                          QString::fromUtf8(v.meaning), a.*v.value});
+    return values;
 }
 
 StandardEvaluation evaluateIso(const std::vector<Reading>& readings, PositioningStandard standard,

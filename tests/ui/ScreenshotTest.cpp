@@ -71,4 +71,14 @@ TEST(Screenshots, compensationAndIso230_2PagesWithData) {
     window.pages()->setCurrentWidget(iso);
     QTest::qWait(200);
     EXPECT_TRUE(window.grab().save(out + QStringLiteral("/gui-iso230-2.png")));
+
+    // The acceptance of the same run against the example specification.
+    ASSERT_TRUE(iso->loadSpecification(
+        QStringLiteral(DRIFTLAB_SOURCE_DIR "/resources/examples/x-axis-acceptance.json")));
+    auto* tabs = iso->findChild<QTabWidget*>();
+    ASSERT_NE(tabs, nullptr);
+    for (int i = 0; i < tabs->count(); ++i)
+        if (tabs->tabText(i) == QStringLiteral("Acceptance")) tabs->setCurrentIndex(i);
+    QTest::qWait(200);
+    EXPECT_TRUE(window.grab().save(out + QStringLiteral("/gui-acceptance.png")));
 }

@@ -215,22 +215,9 @@ void addIso230_2(ReportDocument& doc, const PositioningSection& s) {
                {QStringLiteral("Symbol"), QStringLiteral("Key"), QStringLiteral("Quantity"),
                 QStringLiteral("Value µm")},
                {}};
-    const std::tuple<const char*, const char*, const char*, double> rows[] = {
-        {"B", "B", "reversal error (max |Bᵢ|)", a.reversal_um},
-        {"B̄", "B_mean", "mean reversal error", a.mean_reversal_um},
-        {"R↑", "R_up", "unidirectional repeatability ↑", a.r_up_um},
-        {"R↓", "R_down", "unidirectional repeatability ↓", a.r_down_um},
-        {"R", "R", "bidirectional repeatability", a.r_um},
-        {"E↑", "E_up", "unidirectional systematic error ↑", a.e_up_um},
-        {"E↓", "E_down", "unidirectional systematic error ↓", a.e_down_um},
-        {"E", "E", "bidirectional systematic error", a.e_um},
-        {"M", "M", "mean bidirectional positioning error", a.m_um},
-        {"A↑", "A_up", "unidirectional accuracy ↑", a.a_up_um},
-        {"A↓", "A_down", "unidirectional accuracy ↓", a.a_down_um},
-        {"A", "A", "bidirectional accuracy", a.a_um}};
-    for (const auto& [symbol, key, quantity, value] : rows)
-        axis.rows.push_back({text(QString::fromUtf8(symbol)), text(QString::fromUtf8(key)),
-                             text(QString::fromUtf8(quantity)), number(value, 3)});
+    for (const iso::AxisValue& v : iso::axisValues())
+        axis.rows.push_back({text(QString::fromUtf8(v.symbol)), text(QString::fromUtf8(v.key)),
+                             text(QString::fromUtf8(v.meaning)), number(a.*v.value, 3)});
     doc.table(axis);
     for (const QString& why : e.skipped) doc.paragraph(QStringLiteral("Not determined: ") + why);
     if (s.acceptance) addAcceptance(doc, *s.acceptance);
