@@ -64,16 +64,29 @@ QString positioningRun(const Campaign& campaign, const QString& wanted, QString*
     return chosen.choices.front();
 }
 
-PositioningSection positioning(const Campaign& campaign, const ReportOptions& options) {
+/// The specification the report applies: the caller's, else the campaign's own.
+struct AppliedSpecification {
+    std::optional<iso::AcceptanceSpecification> spec;
+    QString error;  ///< why the campaign's own could not be read
+};
+
+AppliedSpecification appliedSpecification(const Campaign& campaign, const ReportOptions& options) {
+    AppliedSpecification applied;
+    applied.spec =
+        options.acceptance ? options.acceptance : iso::campaignAcceptance(campaign, &applied.error);
+    return applied;
+}
+
+PositioningSection positioning(const Campaign& campaign, const ReportOptions& options,
+                               const AppliedSpecification& applied) {
     PositioningSection s;
     s.run_id = positioningRun(campaign, options.positioning_run, &s.run_note, &s.not_applicable);
     if (!s.not_applicable.isEmpty()) return s;
     const Run& run = *campaign.findRun(s.run_id);
     std::vector<iso::Reading> readings = iso::readingsOf(run);
     s.evaluation = iso::evaluate(readings, options.iso_settings);
-    QString error;
-    const auto spec =
-        options.acceptance ? options.acceptance : iso::campaignAcceptance(campaign, &error);
+    QString error = applied.error;
+    const auto& spec = applied.spec;
     if (spec && s.evaluation.ok()) {
         iso::PositioningAcceptance acceptance =
             iso::evaluateAcceptance(campaign, run, *spec, options.iso_settings);
@@ -94,11 +107,10 @@ PositioningSection positioning(const Campaign& campaign, const ReportOptions& op
     return s;
 }
 
-DriftSection drift(const Campaign& campaign, const ReportOptions& options) {
+DriftSection drift(const Campaign& campaign, const ReportOptions& options,
+                   const AppliedSpecification& applied) {
     DriftSection s;
-    QString error;
-    const auto spec =
-        options.acceptance ? options.acceptance : iso::campaignAcceptance(campaign, &error);
+    const auto& spec = applied.spec;
     const auto decide = [&](const QString& run, const iso::DriftFigures& figures) {
         if (spec)
             if (auto d = iso::driftDecisions(*spec, campaign.machine.axis, figures); !d.empty())
@@ -146,8 +158,10 @@ AcceptanceReportData buildReportData(const Campaign& campaign, const ReportOptio
         };
     };
     data.cover = cover(campaign, options);
-    data.positioning = positioning(campaign, options);
-    data.drift = drift(campaign, options);
+    // Read once: both ISO sections decide against the same specification.
+    const AppliedSpecification applied = appliedSpecification(campaign, options);
+    data.positioning = positioning(campaign, options, applied);
+    data.drift = drift(campaign, options, applied);
     if (!part(0, 0.02)(1)) return data;
     data.models = compareModels(campaign, part(0.02, 0.6));
     if (data.cancelled) return data;
