@@ -36,9 +36,12 @@ ScrewThermalModel::ScrewThermalModel(const ScrewThermalParameters& parameters, d
 void ScrewThermalModel::refactorise(double dt_s, double h_W_m2K) {
     const std::size_t n = m_temperature.size();
     const double theta = m_parameters.theta;
-    std::vector<double> lower(n, -theta * m_conductance_W_K);
-    std::vector<double> upper(n, -theta * m_conductance_W_K);
-    std::vector<double> diag(n);
+    std::vector<double>& lower = m_lower;
+    std::vector<double>& upper = m_upper;
+    std::vector<double>& diag = m_diag;
+    lower.assign(n, -theta * m_conductance_W_K);
+    upper.assign(n, -theta * m_conductance_W_K);
+    diag.resize(n);
     const double convective = h_W_m2K * m_surface_m2;
     for (std::size_t i = 0; i < n; ++i) {
         double leaving = convective;
@@ -57,14 +60,25 @@ void ScrewThermalModel::refactorise(double dt_s, double h_W_m2K) {
 
 /// The bearings' heat of a piece of motion; returns its ∫ |ω|^m dt, for
 /// forced convection.
-double ScrewThermalModel::heatBearings(double omega_rad_s, double duration_s) {
+double ScrewThermalModel::heatBearings(double omega_rad_s, double duration_s, double forcedPower) {
     const double bearing = m_parameters.c_bearing_W_per_rad_s * omega_rad_s * duration_s;
     m_source_J.front() += bearing;
     m_source_J.back() += bearing;
     m_ledger.bearings_J += 2 * bearing;
-    return m_parameters.h1_forced_W_m2K > 0
-               ? std::pow(omega_rad_s, m_parameters.forced_exponent) * duration_s
-               : 0.0;
+    return forcedPower * duration_s;
+}
+
+const ScrewThermalModel::SpeedTerms& ScrewThermalModel::speedTerms(double omega_rad_s) {
+    for (const SpeedTerms& terms : m_speedTerms)
+        if (terms.omega_rad_s == omega_rad_s) return terms;
+    SpeedTerms& terms = m_speedTerms[m_nextSpeedTerm];
+    m_nextSpeedTerm = (m_nextSpeedTerm + 1) % m_speedTerms.size();
+    terms.omega_rad_s = omega_rad_s;
+    terms.nut_W = m_parameters.nutPower_W(omega_rad_s);
+    terms.forced = m_parameters.h1_forced_W_m2K > 0
+                       ? std::pow(omega_rad_s, m_parameters.forced_exponent)
+                       : 0.0;
+    return terms;
 }
 
 double ScrewThermalModel::collectMotionHeat(const StepConditions& c, double t0, double t1) {
@@ -72,21 +86,22 @@ double ScrewThermalModel::collectMotionHeat(const StepConditions& c, double t0, 
     if (c.nut_path) {
         const NutPath& path = *c.nut_path;
         for (const NutPath::Piece& piece : path.step(c.nut_path_step)) {
-            const double power = m_parameters.nutPower_W(piece.omega_rad_s);
+            const SpeedTerms& terms = speedTerms(piece.omega_rad_s);
+            const double power = terms.nut_W;
             const double* w = path.weights(piece);
             double* q = m_source_J.data() + piece.first_cell;
             for (std::size_t i = 0; i < piece.cells; ++i) q[i] += power * w[i];
             m_ledger.nut_J += power * piece.total_J_per_W;
-            speedPowerIntegral += heatBearings(piece.omega_rad_s, piece.duration_s);
+            speedPowerIntegral += heatBearings(piece.omega_rad_s, piece.duration_s, terms.forced);
         }
         return speedPowerIntegral;
     }
     motionPieces(c.motion, m_motionCursor, m_parameters, t0, t1, m_pieces);
     for (const MotionPiece& piece : m_pieces) {
-        m_ledger.nut_J +=
-            depositNutHeat(m_source_J, m_dx, m_parameters.nut_length_m, piece.from_m, piece.to_m,
-                           piece.duration_s, m_parameters.nutPower_W(piece.omega_rad_s));
-        speedPowerIntegral += heatBearings(piece.omega_rad_s, piece.duration_s);
+        const SpeedTerms& terms = speedTerms(piece.omega_rad_s);
+        m_ledger.nut_J += depositNutHeat(m_source_J, m_dx, m_parameters.nut_length_m, piece.from_m,
+                                         piece.to_m, piece.duration_s, terms.nut_W);
+        speedPowerIntegral += heatBearings(piece.omega_rad_s, piece.duration_s, terms.forced);
     }
     return speedPowerIntegral;
 }

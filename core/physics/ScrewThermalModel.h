@@ -9,6 +9,7 @@
 // stored, convected, through fixed-temperature ends) so a run can be checked
 // for energy balance.
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -87,7 +88,15 @@ public:
 private:
     void refactorise(double dt_s, double h_W_m2K);
     double collectMotionHeat(const StepConditions& c, double t0, double t1);
-    double heatBearings(double omega_rad_s, double duration_s);
+    double heatBearings(double omega_rad_s, double duration_s, double forcedPower);
+    /// The powers of a screw speed the step needs: the nut's power and
+    /// |ω|^m for forced convection.
+    struct SpeedTerms {
+        double omega_rad_s = -1;
+        double nut_W = 0;
+        double forced = 0;  ///< |ω|^m, 0 without forced convection
+    };
+    const SpeedTerms& speedTerms(double omega_rad_s);
     /// `joules` into the cells over `length_m` from the fixed end, in
     /// proportion to each cell's share of it (the end cell for 0).
     void depositAtFixedEnd(double joules, double length_m);
@@ -111,6 +120,14 @@ private:
     std::vector<double> m_source_J;   ///< heat deposited in the current step, per cell
     std::vector<double> m_rhs;
     double m_temperatureSum = 0;  ///< Σ T of the current field, for the ledger
+
+    // A step holds many pieces at the same few speeds (every stroke at the
+    // feed, in both directions), and std::pow was a quarter of a simulation:
+    // the last speeds' terms are kept, exact since the inputs are the same.
+    std::array<SpeedTerms, 4> m_speedTerms{};
+    std::size_t m_nextSpeedTerm = 0;
+    // Refactorisation's matrix, kept: forced convection refactorises every step.
+    std::vector<double> m_lower, m_diag, m_upper;
 
     TridiagonalSolver m_solver;
     double m_factorisedDt = -1;
