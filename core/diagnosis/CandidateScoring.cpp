@@ -54,12 +54,16 @@ QString effectWords(const Finding& f) {
                    "nut makes %2× the heat a linear law predicts")
             .arg(v, 0, 'f', 2)
             .arg(std::pow(1500.0 / 800.0, v - 1), 0, 'f', 2);
-    if (base == QLatin1String("motor_heat"))
-        return QStringLiteral(
-                   "the servo motor heats the fixed end: %1 W per (N·m)² of torque, entering "
-                   "over the first %2 mm")
+    if (base == QLatin1String("motor_heat")) {
+        // An entry length under a millimetre is heat into the end cell: say
+        // where it enters rather than "over the first 0 mm".
+        const double entry_mm = value(f, 2);
+        return QStringLiteral("the servo motor heats the fixed end: %1 W per (N·m)² of torque, %2")
             .arg(v, 0, 'g', 3)
-            .arg(value(f, 2), 0, 'f', 0);
+            .arg(entry_mm >= 1
+                     ? QStringLiteral("entering over the first %1 mm").arg(entry_mm, 0, 'f', 0)
+                     : QStringLiteral("entering at the fixed end"));
+    }
     if (base == QLatin1String("sensor_lag") && f.effect.channel.isEmpty())
         return QStringLiteral(
                    "sensor %1 follows the %2 with a first-order lag of %3 s: the axis moved "
