@@ -4,7 +4,8 @@
 #
 #   bash packaging/bootstrap.sh main    the main job: procedures run on the simulated rig, campaigns stored, modelled, compared, diagnosed,
 #                                       compensated and pushed to a simulated controller
-#   bash packaging/bootstrap.sh test    every test (ctest, offscreen)
+#   bash packaging/bootstrap.sh test    the tests (ctest, offscreen), without the validation suites
+#   bash packaging/bootstrap.sh validate  the validation suites too, the benchmark, then docs/validation.md
 #   bash packaging/bootstrap.sh build   install and build only
 #
 # DRIFTLAB_BUILD_DIR overrides the build folder (default: build/).
@@ -162,14 +163,27 @@ for line in open(sys.argv[1]):
 }
 
 run_tests() {
-    log "running the tests"
+    log "running the tests (the validation suites: bootstrap.sh validate)"
     cd "$build"
-    QT_QPA_PLATFORM=offscreen ctest --output-on-failure --parallel "${DRIFTLAB_JOBS:-2}"
+    QT_QPA_PLATFORM=offscreen ctest --output-on-failure --parallel "${DRIFTLAB_JOBS:-2}" -LE validation
+}
+
+# Every test, the hidden-effect suites of label `validation` included, and the
+# benchmark; their records become docs/validation.md.
+run_validation() {
+    log "running every test, the validation suites included"
+    (cd "$build" && QT_QPA_PLATFORM=offscreen ctest --output-on-failure --parallel "${DRIFTLAB_JOBS:-2}")
+    log "benchmark: $build/bench.json"
+    "$build/bench/driftlab-bench" --json --repeat 3 >"$build/bench.json"
+    /usr/bin/python3 "$root/tests/validation/validation_page.py" --build "$build" --bench "$build/bench.json" \
+        >"$root/docs/validation.md"
+    log "docs/validation.md regenerated"
 }
 
 case $job in
     main) install_packages && build_project && run_main_job ;;
     test) install_packages && build_project && run_tests ;;
+    validate) install_packages && build_project && run_validation ;;
     build) install_packages && build_project ;;
-    *) echo "usage: bash packaging/bootstrap.sh main|test|build" >&2; exit 2 ;;
+    *) echo "usage: bash packaging/bootstrap.sh main|test|validate|build" >&2; exit 2 ;;
 esac

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Write docs/validation.md from what the tests and the benchmark recorded.
 
-    ctest                                          # the tests write their records
+    ctest                                          # every test (label validation too) writes its records
     build/bench/driftlab-bench --json --repeat 3 > bench.json
     python3 tests/validation/validation_page.py --build build --bench bench.json > docs/validation.md
 
