@@ -110,9 +110,10 @@ void SetupPage::loadDemo() {
         tr("<b>Demo:</b> the simulated rig is set up: its own X axis and sensors, and a short "
            "procedure (two moving states, %1 of machine time, about %2 at speed-up %3). "
            "The rig hides the servo motor's heat (<i>%4</i>), which the heat-transfer model "
-           "lacks. <b>Press Start on the Run page.</b> Then fit a model on the Models page; "
-           "the Diagnosis page names what the model misses, shows where and what modelling "
-           "it gains. Change anything here and press Apply to run your own set-up.")
+           "lacks. <b>Press Start on the Run page.</b> Then fit a model on the Models page and "
+           "diagnose on the Diagnosis page: it names what the model misses, maps where, and "
+           "measures the gain of modelling it. Change anything here and press Apply to run "
+           "your own set-up.")
             .arg(readableDuration(total_s), readableDuration(total_s / kDemoSpeedup))
             .arg(kDemoSpeedup)
             .arg(demoHiddenCause()));
