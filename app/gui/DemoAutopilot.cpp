@@ -1,6 +1,7 @@
 #include "app/gui/DemoAutopilot.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QPushButton>
 #include <QTabWidget>
@@ -9,6 +10,7 @@
 #include "ui/pages/DiagnosisPage.h"
 #include "ui/pages/ModelsPage.h"
 #include "ui/pages/RunPage.h"
+#include "ui/pages/SetupPage.h"
 #include "ui/shell/BackgroundJob.h"
 #include "ui/shell/MainWindow.h"
 #include "ui/shell/RunController.h"
@@ -56,7 +58,18 @@ void startDemoAutopilot(ui::MainWindow& window, double speedup, std::function<vo
          [w] { w->pages()->setCurrentWidget(w->diagnosisPage()); }},
         {[w] { return w->diagnosisPage()->diagnoseButton()->isEnabled(); },
          [w] { w->diagnosisPage()->diagnoseButton()->click(); }},
-        {[w] { return !w->diagnosisPage()->job()->isRunning(); }, [] {}},
+        {[w] { return !w->diagnosisPage()->job()->isRunning(); },
+         [w] {
+             // The story: the diagnosis names what the demo hid, and its extension is kept.
+             const QString verdict = w->diagnosisPage()->verdict();
+             if (verdict != ui::SetupPage::demoHiddenCause()) {
+                 qWarning("driftlab: the demo's diagnosis names '%s', not the hidden '%s'",
+                          qPrintable(verdict), qPrintable(ui::SetupPage::demoHiddenCause()));
+                 QApplication::exit(1);
+                 return;
+             }
+             w->diagnosisPage()->adoptButton()->click();
+         }},
     });
     auto* timer = new QTimer(&window);
     auto next = std::make_shared<std::size_t>(0);

@@ -4,7 +4,8 @@
 //   driftlab [STORE]          open a store (else the last one)
 //   driftlab --demo           open the demo store, set up with the simulated rig
 //   driftlab --screenshots DIR   save every page as DIR/gui-<page>.png, then quit
-//   driftlab --demo --autopilot  play the demo through the window: run, fit, compare, diagnose
+//   driftlab --demo --autopilot  play the demo through the window: run, fit, compare,
+//                                diagnose (naming the effect the demo hid), adopt
 #include <glog/logging.h>
 
 #include <QAbstractButton>
@@ -44,8 +45,8 @@ int main(int argc, char** argv) {
     parser.addOption(screenshots);
     const QCommandLineOption autopilot{
         QStringLiteral("autopilot"),
-        QStringLiteral("With --demo: run, fit, compare and diagnose through the window (at "
-                       "speed-up 0), then the screenshots if asked.")};
+        QStringLiteral("With --demo: run, fit, compare, diagnose and adopt the extension "
+                       "through the window (at speed-up 0), then the screenshots if asked.")};
     parser.addOption(autopilot);
     parser.addPositionalArgument(QStringLiteral("STORE"),
                                  QStringLiteral("Campaign store to open."));
@@ -63,8 +64,9 @@ int main(int argc, char** argv) {
         settings.setValue(QStringLiteral("demo/offered"), true);
         auto* offer = new QMessageBox(
             QMessageBox::Question, QStringLiteral("Welcome to DriftLab"),
-            QStringLiteral("Run the demo? A simulated feed axis is set up for you: press Start "
-                           "on the Run page, then fit, diagnose and compensate."),
+            QStringLiteral("Run the demo? A simulated feed axis with an effect hidden in it is "
+                           "set up for you: press Start on the Run page, fit a model, and the "
+                           "Diagnosis page names what the model misses."),
             QMessageBox::Yes | QMessageBox::No, &window);
         offer->setAttribute(Qt::WA_DeleteOnClose);
         QObject::connect(offer, &QMessageBox::buttonClicked, &window,

@@ -66,7 +66,6 @@ TEST(DiagnosisPage, namesAHiddenEffectShowsItsEvidenceStoresItAndAdoptsTheExtens
     ASSERT_EQ(stored.size(), 1u);
     EXPECT_EQ(stored[0].verdict, QStringLiteral("forced_convection"));
     EXPECT_FALSE(stored[0].adopted_fit_id);
-    saveScreenshot(*window, QStringLiteral("gui-diagnosis.png"));
 
     // The verdict's row is selected: Adopt keeps its extension as a fit.
     ASSERT_TRUE(page.adoptButton()->isEnabled());

@@ -1,7 +1,8 @@
 // The whole campaign through the main window, as a test engineer does it in
-// `driftlab`: a new store, the demo set-up (the simulated rig), Start on the
-// Run page, then a fit on the Models page, the diagnosis, and a compensation
-// table exported for LinuxCNC — each result checked in the store or the file.
+// `driftlab`: a new store, the demo set-up (the simulated rig, an effect hidden
+// in it), Start on the Run page, then a fit on the Models page, the diagnosis
+// naming the hidden effect, its extension adopted, and a compensation table
+// exported for LinuxCNC — each result checked in the store or the file.
 #include <gtest/gtest.h>
 
 #include <QAction>
@@ -16,6 +17,7 @@
 #include "db/DiagnosisStore.h"
 #include "db/ModelFitStore.h"
 #include "tests/ui/UiTestSupport.h"
+#include "ui/models/FindingsModel.h"
 #include "ui/pages/CompensationPage.h"
 #include "ui/pages/DiagnosisPage.h"
 #include "ui/pages/ModelsPage.h"
@@ -25,11 +27,12 @@
 #include "ui/shell/MainWindow.h"
 #include "ui/shell/RunController.h"
 #include "ui/shell/Session.h"
+#include "ui/widgets/PlotView.h"
 #include "ui/widgets/TableExportPanel.h"
 
 using namespace driftlab;
 
-TEST(MainWindowEndToEnd, setUpRunFitDiagnoseAndExportATable) {
+TEST(MainWindowEndToEnd, setUpRunFitDiagnoseTheHiddenEffectAdoptAndExportATable) {
     QTemporaryDir dir;
     ui::MainWindow window;
     window.show();
@@ -61,22 +64,36 @@ TEST(MainWindowEndToEnd, setUpRunFitDiagnoseAndExportATable) {
         QTest::qWaitFor([&] { return window.modelsPage()->fitButton()->isEnabled(); }, 30'000));
     QTest::mouseClick(window.modelsPage()->fitButton(), Qt::LeftButton);
     ASSERT_TRUE(QTest::qWaitFor([&] { return !window.modelsPage()->job()->isRunning(); }, 120'000));
-    // Diagnosis: what the physical model misses on these runs.
-    window.pages()->setCurrentWidget(window.diagnosisPage());
-    ASSERT_TRUE(QTest::qWaitFor(
-        [&] { return window.diagnosisPage()->diagnoseButton()->isEnabled(); }, 30'000));
-    QTest::mouseClick(window.diagnosisPage()->diagnoseButton(), Qt::LeftButton);
-    ASSERT_TRUE(
-        QTest::qWaitFor([&] { return !window.diagnosisPage()->job()->isRunning(); }, 300'000));
-    EXPECT_FALSE(window.diagnosisPage()->verdict().isEmpty())
-        << window.diagnosisPage()->status().toStdString();
+    // Diagnosis: what the physical model misses on these runs, which is what the demo hid.
+    ui::DiagnosisPage* diagnosis = window.diagnosisPage();
+    window.pages()->setCurrentWidget(diagnosis);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return diagnosis->diagnoseButton()->isEnabled(); }, 30'000));
+    QTest::mouseClick(diagnosis->diagnoseButton(), Qt::LeftButton);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !diagnosis->job()->isRunning(); }, 300'000));
+    const ui::FindingsModel* findings = diagnosis->findingsModel();
+    const int verdict = findings->verdictRow();
+    ASSERT_GE(verdict, 0) << diagnosis->status().toStdString();
+    EXPECT_EQ(findings->index(verdict, ui::FindingsModel::Cause).data().toString(),
+              ui::SetupPage::demoHiddenCause());
+    EXPECT_GT(findings->index(verdict, ui::FindingsModel::Gain).data().toDouble(), 0);
+    EXPECT_EQ(diagnosis->beforeAfter()->curveCount(), 3);  // measured, base, with the extension
+
+    // Adopt: the verdict's row is selected; its extension is kept as a fit.
+    ASSERT_TRUE(diagnosis->adoptButton()->isEnabled()) << diagnosis->status().toStdString();
+    QTest::mouseClick(diagnosis->adoptButton(), Qt::LeftButton);
     {
         QString error;
         auto db = db::CampaignStore::open(store, db::StoreAccess::ReadOnly, &error);
         ASSERT_TRUE(db) << error.toStdString();
-        EXPECT_EQ(db::modelFits(*db, campaignId).size(), 1u)
-            << window.modelsPage()->status().toStdString();
-        EXPECT_EQ(db::diagnoses(*db, campaignId).size(), 1u);
+        const auto fits = db::modelFits(*db, campaignId);
+        ASSERT_EQ(fits.size(), 2u) << window.modelsPage()->status().toStdString();
+        EXPECT_EQ(fits[1].model,
+                  QStringLiteral("heat-transfer+") + ui::SetupPage::demoHiddenCause())
+            << diagnosis->status().toStdString();
+        const auto stored = db::diagnoses(*db, campaignId);
+        ASSERT_EQ(stored.size(), 1u);
+        EXPECT_EQ(stored[0].verdict, ui::SetupPage::demoHiddenCause());
+        EXPECT_EQ(stored[0].adopted_fit_id, std::optional<qint64>(fits[1].id));
     }
 
     // Compensation: the table of the first positioning run, exported for LinuxCNC.

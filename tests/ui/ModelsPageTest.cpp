@@ -150,7 +150,6 @@ TEST(ModelsPage, crossStateMatrixHoldsTheCliComparisonColouredGreenToRed) {
     ASSERT_TRUE(waitForJob(*page.job()));
     EXPECT_TRUE(page.status().startsWith(QStringLiteral("Compared 7 models")))
         << page.status().toStdString();
-    saveScreenshot(*window, QStringLiteral("gui-models.png"));
 
     const QJsonObject cli =
         cliJson({QStringLiteral("compare"), QStringLiteral("--db"), store,

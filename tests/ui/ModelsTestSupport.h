@@ -6,7 +6,6 @@
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QWidget>
 
 #include "db/ModelFitStore.h"
 #include "tests/support/CliRunner.h"
@@ -48,16 +47,6 @@ inline std::size_t storedFits(const QString& path) {
     auto store = db::CampaignStore::open(path, db::StoreAccess::ReadOnly, &error);
     EXPECT_TRUE(store) << error.toStdString();
     return store ? db::modelFits(*store, 1).size() : 0;
-}
-
-/// With DRIFTLAB_SCREENSHOT_DIR set (run under xvfb-run for a real X
-/// server), saves `window` as DIR/name.
-inline void saveScreenshot(QWidget& window, const QString& name) {
-    const QByteArray dir = qgetenv("DRIFTLAB_SCREENSHOT_DIR");
-    if (dir.isEmpty()) return;
-    QTest::qWait(300);  // let the plots lay out
-    EXPECT_EQ(window.width(), 1280) << "the window grew: a widget wants more room";
-    EXPECT_TRUE(window.grab().save(QString::fromLocal8Bit(dir) + QLatin1Char('/') + name));
 }
 
 }  // namespace driftlab::test

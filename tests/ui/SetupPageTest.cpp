@@ -48,6 +48,10 @@ TEST_F(SetupPageTest, theDemoIsAValidSetupOfTheSimulatedRigAppliedToTheSession) 
     EXPECT_EQ(setup.procedure.moving_states->states[0].run_id, QStringLiteral("S1"));
     EXPECT_EQ(setup.procedure.moving_states->states[1].run_id, QStringLiteral("S4"));
     EXPECT_LT(setup.procedure.moving_states->states[0].warmup_s, 7200);
+    // The story's hidden effect, as the rig takes it (`simulate --effect ID=VALUE`).
+    ASSERT_EQ(setup.effects.size(), 1);
+    EXPECT_TRUE(setup.effects[0].startsWith(SetupPage::demoHiddenCause() + QLatin1Char('=')))
+        << setup.effects[0].toStdString();
     ASSERT_TRUE(setup.machine);
     EXPECT_TRUE(setup.machine->findChannel(QStringLiteral("T_nut")));
     EXPECT_EQ(setup.machine->findChannel(QStringLiteral("T_nut"))->role, ChannelRole::Nut);

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# The application under a real X server (Xvfb, 1280×800): it starts, the demo
-# runs through the window (run, fit, compare, diagnose), and a screenshot of
-# every page (and the Models page's predictions) is written. Usage: xvfb_demo.sh DRIFTLAB OUT_DIR
+# The application under a real X server (Xvfb, 1280×800): it starts, the demo's
+# story plays through the window (run, fit, compare, diagnose, adopt; the
+# application exits with 1 when the diagnosis does not name the effect the demo
+# hid), and a screenshot of every page (and the Models page's predictions) is
+# written. Usage: xvfb_demo.sh DRIFTLAB OUT_DIR
 set -euo pipefail
 app=$1 out=$2
 # Qt wants the runtime folder private (0700), as a login session makes it.

@@ -48,9 +48,13 @@ public:
     bool loadMachine(const QString& path, QString* error);
     bool saveMachine(const QString& path, QString* error);
     /// The demo: the simulated rig's own machine and channels, two moving
-    /// states shortened, speed-up 600, applied; a banner says what to do next.
+    /// states shortened, speed-up 600, the demo's hidden effect, applied; a
+    /// banner says what to do next.
     void loadDemo();
     bool demoBannerShown() const;
+    /// The effect the demo hides in the simulated rig, a cause id of the
+    /// diagnosis: what the Diagnosis page is to name after the demo's run.
+    static QString demoHiddenCause();
 
     MachineForm* machineForm() const { return m_machine; }
     ScrewForm* screwForm() const { return m_screw; }
