@@ -14,7 +14,7 @@
 
 #include "db/CampaignStore.h"
 #include "db/ModelFitStore.h"
-#include "tests/support/BundleTestSupport.h"
+#include "tests/ui/ShortedSensorStore.h"
 #include "tests/ui/UiTestSupport.h"
 #include "ui/models/SensorFlagModel.h"
 #include "ui/pages/SensorHealthPage.h"
@@ -30,23 +30,7 @@ using FlagModel = ui::SensorFlagModel;
 class SensorHealthPageTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        const QString bundle = dir.filePath(QStringLiteral("shorted"));
-        copyBundle(simulatedCampaign(QStringLiteral("S1,S3"), 3), bundle);
-        QList<QByteArray> lines = readFile(bundle + "/samples.csv").split('\n');
-        const int column = int(lines[0].split(',').indexOf("T_bearing_fixed"));
-        ASSERT_GT(column, 1);
-        for (QByteArray& line : lines) {
-            QList<QByteArray> f = line.split(',');
-            if (f.size() <= column || f[0] != "S1" || f[1].toDouble() < 700 ||
-                f[1].toDouble() > 750)
-                continue;
-            f[column] = "-50";
-            line = f.join(',');
-        }
-        writeFile(bundle + "/samples.csv", lines.join('\n'));
-        db = dir.filePath(QStringLiteral("lab.sqlite"));
-        const CliResult r = runCli({QStringLiteral("import"), QStringLiteral("--db"), db, bundle});
-        ASSERT_EQ(r.exitCode, 0) << r.err.constData();
+        db = importedStore(dir, shortedSensorBundle(dir));
         QString error;
         ASSERT_TRUE(session.openStore(db, false, &error)) << qPrintable(error);
         session.selectCampaign(1);

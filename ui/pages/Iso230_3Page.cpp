@@ -8,7 +8,9 @@
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "ui/models/DriftSeriesModel.h"
 #include "ui/shell/BackgroundJob.h"

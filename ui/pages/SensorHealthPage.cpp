@@ -9,6 +9,7 @@
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
+#include <utility>
 
 #include "ui/models/SensorFlagModel.h"
 #include "ui/shell/BackgroundJob.h"
@@ -133,8 +134,8 @@ void SensorHealthPage::loadFlags() {
                 showError(tr("Reading the sensor flags: %1").arg(m_flags.error));
             else
                 m_message->setText(
-                    tr("Flags of campaign %1 as stored by \"Check run\" or `driftlab-cli health "
-                       "--store`. The fits leave a flagged stretch's samples out unless it is "
+                    tr("Flags of campaign %1 as stored by \"Check run\" or driftlab-cli health "
+                       "--store. The fits leave a flagged stretch's samples out unless it is "
                        "kept.")
                         .arg(m_campaign->name));
             showRun();

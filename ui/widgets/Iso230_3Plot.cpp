@@ -27,7 +27,8 @@ void setUpPlot(QCustomPlot* plot, const QString& x, const QString& y) {
     plot->yAxis->setLabel(y);
     plot->legend->setFont(QFont(plot->font().family(), 8));
     plot->legend->setRowSpacing(-3);
-    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    // Top right: a warm-up then cool-down run's drift is low there.
+    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
     plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     plot->setMinimumSize(300, 220);
 }
@@ -61,6 +62,11 @@ Iso230_3Plot::Iso230_3Plot(QWidget* parent)
       m_side(new QCustomPlot(this)),
       m_direction(new QComboBox(this)) {
     setUpPlot(m_series, tr("Time since the run's start (s)"), tr("Drift (µm)"));
+    // The legend beside the curves: a dozen targets inside would hide them.
+    m_series->plotLayout()->addElement(0, 1, m_series->legend);
+    m_series->plotLayout()->setColumnStretchFactor(1, 0.001);
+    m_series->legend->setMargins(QMargins(6, 4, 6, 4));
+    m_series->legend->setBorderPen(Qt::NoPen);
     m_direction->addItem(tr("+ approach"), int(Direction::Positive));
     m_direction->addItem(tr("− approach"), int(Direction::Negative));
     m_direction->setToolTip(tr("The approach direction the drift map shows"));
@@ -124,19 +130,17 @@ void Iso230_3Plot::show(const Campaign& campaign, const Run& run, const iso::Run
         for (const iso::TargetDrift& t : drift.axis->targets) {
             const bool up = t.direction == Direction::Positive;
             addCurve(
-                m_series,
-                QStringLiteral("%1 mm %2")
-                    .arg(t.target_mm)
-                    .arg(up ? QStringLiteral("+") : QStringLiteral("−")),
-                t.drift.time_s, t.drift.drift_um,
+                m_series, tr("%1 mm").arg(t.target_mm), t.drift.time_s, t.drift.drift_um,
                 QPen(curveColour(colourOf[t.target_mm]), 1.5, up ? Qt::SolidLine : Qt::DashLine),
                 true);
             if (!up) m_series->graph()->removeFromLegend();
         }
         m_series->legend->setVisible(colourOf.size() <= 12);
+        m_series->yAxis->setLabel(tr("Drift (µm): + approach solid, − dashed"));
         m_axis = drift.axis;
         showDriftMap();
     } else {
+        m_series->yAxis->setLabel(tr("Drift (µm)"));
         int i = 0;
         for (const iso::ProbeDrift& p : drift.probes->probes)
             addCurve(m_series, p.channel_id, p.drift.time_s, p.drift.drift_um,
@@ -166,7 +170,7 @@ void Iso230_3Plot::show(const Campaign& campaign, const Run& run, const iso::Run
 void Iso230_3Plot::showDriftMap() {
     if (!m_axis) return;
     resetPlot(m_side);
-    setUpPlot(m_side, tr("Target position (mm)"), tr("Cycle, at its mean time since the start"));
+    setUpPlot(m_side, tr("Target position (mm)"), tr("Cycle (its mean time, s)"));
     const Direction wanted = Direction(m_direction->currentData().toInt());
     std::vector<const iso::TargetDrift*> targets;
     for (const iso::TargetDrift& t : m_axis->targets)
@@ -212,7 +216,7 @@ void Iso230_3Plot::showDriftMap() {
     m_side->xAxis->setTicker(targetTicks);
     QSharedPointer<QCPAxisTickerText> cycleTicks(new QCPAxisTickerText);
     for (const auto& [cycle, time] : cycleTime)
-        cycleTicks->addTick(rowOf[cycle], tr("%1 s").arg(time.first / time.second, 0, 'f', 0));
+        cycleTicks->addTick(rowOf[cycle], QString::number(time.first / time.second, 'f', 0));
     m_side->yAxis->setTicker(cycleTicks);
     m_side->xAxis->setRange(-0.5, columns - 0.5);
     m_side->yAxis->setRange(-0.5, rows - 0.5);

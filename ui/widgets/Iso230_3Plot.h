@@ -6,6 +6,7 @@
 // over time, and beside it the run's temperatures over the same time.
 
 #include <QWidget>
+#include <optional>
 
 #include "core/domain/Campaign.h"
 #include "core/iso/Iso230_3Json.h"

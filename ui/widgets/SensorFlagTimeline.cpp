@@ -84,10 +84,14 @@ void SensorFlagTimeline::show(const Campaign& campaign, const Run& run,
     const std::vector<double>& t = run.samples.time_s;
     const double start = t.empty() ? 0 : t.front(), end = t.empty() ? 1 : t.back();
     m_plot->xAxis->setRange(start, std::max(end, start + 1));
-    // A bar at least 0.4 % of the run wide: a one-sample spike stays visible.
-    const double minWidth = 0.004 * (end - start);
+    // A bar at least 0.8 % of the run wide: a one-sample spike stays visible.
+    const double minWidth = 0.008 * (end - start);
     std::map<sensors::SensorFault, bool> inLegend;
-    for (const ShownFlag& shown : flags) {
+    // Kept stretches drawn last: their outline stays visible over a filled one.
+    std::vector<ShownFlag> ordered = flags;
+    std::stable_partition(ordered.begin(), ordered.end(),
+                          [](const ShownFlag& f) { return !f.flag.kept; });
+    for (const ShownFlag& shown : ordered) {
         const auto row = rowOf.find(shown.flag.range.channel);
         if (row == rowOf.end()) continue;
         const sensors::FlaggedRange& r = shown.flag.range;
@@ -108,6 +112,11 @@ void SensorFlagTimeline::show(const Campaign& campaign, const Run& run,
             entry->setName(kindWords(r.fault));
             entry->setPen(QPen(colour, 6));
         }
+    }
+    if (m_kept > 0) {
+        QCPGraph* entry = m_plot->addGraph();
+        entry->setName(tr("outlined: kept, used in the fits"));
+        entry->setPen(QPen(Qt::darkGray, 1.5, Qt::DashLine));
     }
     m_plot->legend->setVisible(!inLegend.empty());
     m_plot->replot();
