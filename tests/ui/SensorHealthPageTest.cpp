@@ -17,8 +17,10 @@
 #include "tests/ui/ShortedSensorStore.h"
 #include "tests/ui/UiTestSupport.h"
 #include "ui/models/SensorFlagModel.h"
+#include "ui/pages/Iso230_3Page.h"
 #include "ui/pages/SensorHealthPage.h"
 #include "ui/shell/FitJob.h"
+#include "ui/shell/MainWindow.h"
 #include "ui/shell/Session.h"
 #include "ui/widgets/SensorFlagTimeline.h"
 
@@ -145,4 +147,11 @@ TEST_F(SensorHealthPageTest, keepingAndMaskingAStretchChangesTheFitAsTheCliDoes)
     EXPECT_FALSE(cell(0, FlagModel::InFits).toBool());
     EXPECT_EQ(guiFit(&note), masked);
     EXPECT_EQ(cliFit(), masked);
+}
+
+TEST(DriftHealthPages, fitTheSmallestSupportedWindow) {
+    // 1280 × 800 with the campaign tree beside them leaves the pages about 1000 px.
+    ui::MainWindow window;
+    EXPECT_LE(window.iso230_3Page()->minimumSizeHint().width(), 1000);
+    EXPECT_LE(window.sensorHealthPage()->minimumSizeHint().width(), 1000);
 }

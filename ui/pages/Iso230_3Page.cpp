@@ -78,9 +78,9 @@ Iso230_3Page::Iso230_3Page(Session& session, QWidget* parent)
     settings->addWidget(new QLabel(tr("Run"), this));
     settings->addWidget(m_run);
     settings->addSpacing(12);
-    settings->addWidget(new QLabel(tr("Stabilised when the drift varies by less than D"), this));
+    settings->addWidget(new QLabel(tr("Stabilised: drift varies less than D"), this));
     settings->addWidget(m_tolerance);
-    settings->addWidget(new QLabel(tr("over every window W"), this));
+    settings->addWidget(new QLabel(tr("over every W"), this));
     settings->addWidget(m_window);
     settings->addSpacing(12);
     settings->addWidget(new QLabel(tr("Probe distance"), this));

@@ -210,7 +210,7 @@ void Iso230_3Plot::showDriftMap() {
     m_side->axisRect()->setMarginGroup(QCP::msBottom | QCP::msTop, margins);
     scale->setMarginGroup(QCP::msBottom | QCP::msTop, margins);
     QSharedPointer<QCPAxisTickerText> targetTicks(new QCPAxisTickerText);
-    const int step = std::max(1, columns / 8);
+    const int step = (columns + 5) / 6;  // at most six labels: positions need room
     for (int c = 0; c < columns; c += step)
         targetTicks->addTick(c, QString::number(targets[std::size_t(c)]->target_mm, 'g', 6));
     m_side->xAxis->setTicker(targetTicks);
