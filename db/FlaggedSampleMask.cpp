@@ -8,7 +8,12 @@ QString MaskedSamples::describe() const {
     QString text = QStringLiteral("%1 flagged samples of %2 channel(s) left out")
                        .arg(samples)
                        .arg(channels.size());
-    if (!stretches.isEmpty()) text += QStringLiteral(": ") + stretches.join(QStringLiteral(", "));
+    // The first few by name: a noisy channel can have hundreds of spikes.
+    constexpr int kNamed = 5;
+    if (!stretches.isEmpty())
+        text += QStringLiteral(": ") + stretches.mid(0, kNamed).join(QStringLiteral(", "));
+    if (stretches.size() > kNamed)
+        text += QStringLiteral(" and %1 more").arg(stretches.size() - kNamed);
     if (kept > 0) text += QStringLiteral("; %1 flagged stretch(es) kept").arg(kept);
     return text;
 }

@@ -18,7 +18,8 @@ struct MaskedSamples {
     QStringList channels;     ///< the channels they belong to
     QStringList stretches;    ///< the stretches left out: "RUN CHANNEL KIND FROM–TO s"
     std::size_t kept = 0;     ///< flagged stretches kept: their samples are used
-    /// "N flagged samples of M channel(s) left out: …; K flagged stretch(es) kept".
+    /// "N flagged samples of M channel(s) left out: (the first five stretches)
+    /// [and X more]; K flagged stretch(es) kept".
     QString describe() const;
 };
 
