@@ -153,9 +153,10 @@ void Iso230_3Page::evaluateRun() {
     if (!m_campaign) return;
     const QString runId = m_run->currentData().toString();
     if (runId.isEmpty()) {
-        showError(tr("No run of campaign %1 is a moving run with positioning readings, a "
-                     "spindle run or an ETVE run")
-                      .arg(m_campaign->name));
+        // Not a fault of the campaign (a campaign may have no drift runs): no log entry.
+        m_message->setText(tr("No run of campaign %1 is a moving run with positioning "
+                              "readings, a spindle run or an ETVE run")
+                               .arg(m_campaign->name));
         return emit evaluated();
     }
     iso::DriftSettings settings;
