@@ -2,8 +2,11 @@
 
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QSqlRecord>
 #include <algorithm>
+#include <set>
 #include <stdexcept>
+#include <tuple>
 
 namespace driftlab::db {
 namespace {
@@ -11,6 +14,17 @@ namespace {
 bool fail(QString* error, const CampaignStore& store, const QString& why) {
     if (error) *error = QStringLiteral("%1: %2").arg(store.path(), why);
     return false;
+}
+
+using RangeKey = std::tuple<QString, QString, double, double>;
+
+RangeKey keyOf(const QString& channel, const QString& kind, double from_s, double to_s) {
+    return {channel, kind, from_s, to_s};
+}
+
+/// Schema v7 added the keep choice; an older store read without migrating has none.
+bool hasKeptColumn(CampaignStore& store) {
+    return store.database().record(QStringLiteral("sample_flag")).contains(QStringLiteral("kept"));
 }
 
 }  // namespace
@@ -33,17 +47,29 @@ bool replaceRunFlags(CampaignStore& store, qint64 runDbId,
     q.addBindValue(runDbId);
     if (!q.exec() || !q.next()) return rollback(q.lastError().text());
     if (q.value(0).toInt() != 1) return rollback(QStringLiteral("no such run"));
+    // The stretches the user kept: kept again when the check finds them again.
+    std::set<RangeKey> kept;
+    q.prepare(QStringLiteral(
+        "SELECT channel, kind, from_t, to_t FROM sample_flag WHERE run_id = ? AND kept = 1"));
+    q.addBindValue(runDbId);
+    if (!q.exec()) return rollback(q.lastError().text());
+    while (q.next())
+        kept.insert(keyOf(q.value(0).toString(), q.value(1).toString(), q.value(2).toDouble(),
+                          q.value(3).toDouble()));
     q.prepare(QStringLiteral("DELETE FROM sample_flag WHERE run_id = ?"));
     q.addBindValue(runDbId);
     if (!q.exec()) return rollback(q.lastError().text());
-    q.prepare(QStringLiteral(
-        "INSERT INTO sample_flag (run_id, channel, kind, from_t, to_t) VALUES (?, ?, ?, ?, ?)"));
+    q.prepare(
+        QStringLiteral("INSERT INTO sample_flag (run_id, channel, kind, from_t, to_t, kept) "
+                       "VALUES (?, ?, ?, ?, ?, ?)"));
     for (const sensors::FlaggedRange& r : ranges) {
+        const QString kind = sensors::toString(r.fault);
         q.bindValue(0, runDbId);
         q.bindValue(1, r.channel);
-        q.bindValue(2, sensors::toString(r.fault));
+        q.bindValue(2, kind);
         q.bindValue(3, r.from_s);
         q.bindValue(4, r.to_s);
+        q.bindValue(5, int(kept.count(keyOf(r.channel, kind, r.from_s, r.to_s))));
         if (!q.exec())
             return rollback(QStringLiteral("%1 %2 %3–%4 s: %5")
                                 .arg(r.channel, sensors::toString(r.fault))
@@ -106,14 +132,26 @@ std::optional<qint64> runDbId(CampaignStore& store, qint64 campaignId, const QSt
 
 std::optional<std::map<QString, std::vector<sensors::FlaggedRange>>> loadSampleFlags(
     CampaignStore& store, qint64 campaignId, QString* error) {
+    const auto stored = loadStoredFlags(store, campaignId, error);
+    if (!stored) return std::nullopt;
     std::map<QString, std::vector<sensors::FlaggedRange>> flags;
+    for (const auto& [run, list] : *stored)
+        for (const StoredFlag& flag : list) flags[run].push_back(flag.range);
+    return flags;
+}
+
+std::optional<std::map<QString, std::vector<StoredFlag>>> loadStoredFlags(CampaignStore& store,
+                                                                          qint64 campaignId,
+                                                                          QString* error) {
+    std::map<QString, std::vector<StoredFlag>> flags;
     QSqlQuery q(store.database());
     // A store below v5 opened read-only has no table and so no flags. (Asked
     // through Qt SQL, which knows how each back end lists its tables.)
     if (!store.database().tables().contains(QStringLiteral("sample_flag"))) return flags;
-    q.prepare(QStringLiteral(
-        "SELECT r.name, f.channel, f.kind, f.from_t, f.to_t FROM sample_flag f "
-        "JOIN run r ON r.id = f.run_id WHERE r.campaign_id = ? ORDER BY r.ordinal, f.id"));
+    q.prepare(QStringLiteral("SELECT r.name, f.channel, f.kind, f.from_t, f.to_t, f.id, %1 "
+                             "FROM sample_flag f JOIN run r ON r.id = f.run_id "
+                             "WHERE r.campaign_id = ? ORDER BY r.ordinal, f.id")
+                  .arg(hasKeptColumn(store) ? QStringLiteral("f.kept") : QStringLiteral("0")));
     q.addBindValue(campaignId);
     if (!q.exec()) {
         fail(error, store,
@@ -129,9 +167,41 @@ std::optional<std::map<QString, std::vector<sensors::FlaggedRange>>> loadSampleF
             return std::nullopt;
         }
         flags[q.value(0).toString()].push_back(
-            {q.value(1).toString(), *fault, q.value(3).toDouble(), q.value(4).toDouble()});
+            {q.value(5).toLongLong(),
+             {q.value(1).toString(), *fault, q.value(3).toDouble(), q.value(4).toDouble()},
+             q.value(6).toInt() != 0});
     }
     return flags;
+}
+
+bool setFlagsKept(CampaignStore& store, const std::vector<qint64>& flagIds, bool kept,
+                  QString* error) {
+    if (store.access() == StoreAccess::ReadOnly)
+        return fail(error, store, QStringLiteral("opened read-only: cannot keep or mask flags"));
+    QSqlDatabase& db = store.database();
+    if (!db.transaction())
+        return fail(error, store,
+                    QStringLiteral("cannot keep or mask flags: %1").arg(db.lastError().text()));
+    QSqlQuery q(db);
+    q.prepare(QStringLiteral("UPDATE sample_flag SET kept = ? WHERE id = ?"));
+    for (const qint64 id : flagIds) {
+        q.bindValue(0, int(kept));
+        q.bindValue(1, id);
+        if (!q.exec() || q.numRowsAffected() != 1) {
+            const QString why = q.lastError().text();
+            db.rollback();
+            return fail(error, store,
+                        QStringLiteral("sensor flag %1: %2")
+                            .arg(id)
+                            .arg(why.trimmed().isEmpty() ? QStringLiteral("no such flag") : why));
+        }
+    }
+    if (!db.commit()) {
+        const QString why = db.lastError().text();
+        db.rollback();
+        return fail(error, store, QStringLiteral("cannot keep or mask flags: %1").arg(why));
+    }
+    return true;
 }
 
 }  // namespace driftlab::db

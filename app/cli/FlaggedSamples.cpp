@@ -24,9 +24,15 @@ void leaveOutFlaggedSamples(const QCommandLineParser& parser, Campaign& campaign
     const std::size_t samples = masked->samples;
     const QStringList& channels = masked->channels;
     endProgressLine();
+    // Stretches kept on the sensor-health page are used and not counted here.
+    const QString kept = masked->kept == 0 ? QString()
+                         : masked->kept == 1
+                             ? QStringLiteral(", 1 flagged stretch kept")
+                             : QStringLiteral(", %1 flagged stretches kept").arg(masked->kept);
     std::fprintf(stderr,
-                 "flags: %zu samples of %lld channel%s left out (--keep-flagged to use them)\n",
-                 samples, static_cast<long long>(channels.size()), channels.size() == 1 ? "" : "s");
+                 "flags: %zu samples of %lld channel%s left out%s (--keep-flagged to use them)\n",
+                 samples, static_cast<long long>(channels.size()), channels.size() == 1 ? "" : "s",
+                 qPrintable(kept));
 }
 
 }  // namespace driftlab::cli

@@ -7,16 +7,13 @@
 #include "core/iso/AcceptanceJson.h"
 #include "core/iso/DriftAcceptance.h"
 #include "core/iso/Iso230_3.h"
+#include "core/iso/Iso230_3Json.h"
 
 namespace driftlab::cli {
 namespace {
 
-bool hasAxisDrift(const Run& run) {
-    return isFeedAxisRun(run.kind) && !run.positioning.empty();
-}
-bool hasProbeDrift(const Run& run) {
-    return run.kind == RunKind::Spindle || run.kind == RunKind::Etve;
-}
+using iso::hasAxisDrift;
+using iso::hasProbeDrift;
 
 /// --run R, else every moving run with readings and every spindle and ETVE run.
 std::vector<const Run*> chooseRuns(const Campaign& campaign, const QString& wanted) {
@@ -38,10 +35,7 @@ std::vector<const Run*> chooseRuns(const Campaign& campaign, const QString& want
             QStringLiteral("no run of the campaign is a moving run with positioning "
                            "readings, a spindle run or an ETVE run"));
     if (!hasAxisDrift(*runs.front()) && !hasProbeDrift(*runs.front()))
-        throw CliError(QStringLiteral("run %1 (%2) has no drift to evaluate: it is neither a "
-                                      "feed-axis run with positioning readings nor a spindle or "
-                                      "ETVE run")
-                           .arg(wanted, toString(runs.front()->kind)));
+        throw CliError(iso::evaluateRunDrift(campaign, *runs.front(), {}).error);
     return runs;
 }
 
@@ -51,87 +45,6 @@ QString stabilisedText(const iso::DriftSeries& s) {
 }
 QString sign(Direction d) {
     return d == Direction::Positive ? QStringLiteral("+") : QStringLiteral("-");
-}
-
-/// A difference of readings given to 0.01 µm prints as 11.069999999999999:
-/// rounded to 1 pm, far below any probe's or interferometer's resolution.
-double picometres(double value_um) {
-    return std::round(value_um * 1e6) / 1e6;
-}
-
-QJsonObject seriesJson(const iso::DriftSeries& s) {
-    return {{QStringLiteral("max_drift_um"), picometres(s.max_drift_um)},
-            {QStringLiteral("max_drift_time_s"), s.max_drift_time_s},
-            {QStringLiteral("range_um"), picometres(s.range_um)},
-            {QStringLiteral("final_drift_um"), picometres(s.final_drift_um)},
-            {QStringLiteral("stabilised"), s.stabilised()},
-            {QStringLiteral("stabilised_time_s"), jsonNumber(s.stabilised_time_s)}};
-}
-
-QJsonObject axisJson(const iso::AxisDriftEvaluation& e) {
-    QJsonArray targets;
-    for (const iso::TargetDrift& t : e.targets) {
-        QJsonObject o = seriesJson(t.drift);
-        o[QStringLiteral("target_mm")] = t.target_mm;
-        o[QStringLiteral("direction")] = sign(t.direction);
-        QJsonArray time_s, drift_um;
-        for (std::size_t i = 0; i < t.drift.time_s.size(); ++i) {
-            time_s.append(t.drift.time_s[i]);
-            drift_um.append(picometres(t.drift.drift_um[i]));
-        }
-        o[QStringLiteral("time_s")] = time_s;
-        o[QStringLiteral("drift_um")] = drift_um;
-        targets.append(o);
-    }
-    // The axis zero and far end, by direction, so that scripts need not search the targets.
-    auto end = [&](double at_mm) {
-        QJsonObject o{{QStringLiteral("target_mm"), at_mm}};
-        for (Direction d : {Direction::Positive, Direction::Negative})
-            if (const iso::TargetDrift* t = e.find(at_mm, d)) o[sign(d)] = seriesJson(t->drift);
-        return o;
-    };
-    const iso::TargetDrift& max = e.targets[std::size_t(e.max_index)];
-    return {{QStringLiteral("evaluation"), QStringLiteral("moving linear axis")},
-            {QStringLiteral("zero"), end(e.zero_mm)},
-            {QStringLiteral("far_end"), end(e.far_end_mm)},
-            {QStringLiteral("cycles"), e.cycles},
-            {QStringLiteral("zero_mm"), e.zero_mm},
-            {QStringLiteral("far_end_mm"), e.far_end_mm},
-            {QStringLiteral("max_drift_um"), picometres(e.max_drift_um)},
-            {QStringLiteral("max_drift_target_mm"), max.target_mm},
-            {QStringLiteral("max_drift_direction"), sign(max.direction)},
-            {QStringLiteral("max_drift_time_s"), max.drift.max_drift_time_s},
-            {QStringLiteral("stabilised"), !std::isnan(e.stabilised_time_s)},
-            {QStringLiteral("stabilised_time_s"), jsonNumber(e.stabilised_time_s)},
-            {QStringLiteral("targets"), targets},
-            {QStringLiteral("warnings"), QJsonArray::fromStringList(e.warnings)}};
-}
-
-QJsonObject probesJson(const iso::ProbeDriftEvaluation& e) {
-    QJsonArray probes, tilts;
-    for (const iso::ProbeDrift& p : e.probes) {
-        QJsonObject o = seriesJson(p.drift);
-        o[QStringLiteral("channel")] = p.channel_id;
-        o[QStringLiteral("role")] = toString(p.role);
-        o[QStringLiteral("samples")] = int(p.drift.time_s.size());
-        probes.append(o);
-    }
-    for (const iso::TiltDrift& t : e.tilts) {
-        QJsonObject o = seriesJson(t.drift);
-        o[QStringLiteral("name")] = t.name;
-        o[QStringLiteral("from")] = t.from;
-        o[QStringLiteral("to")] = t.to;
-        o[QStringLiteral("max_tilt_urad")] = picometres(t.max_tilt_urad);
-        o[QStringLiteral("range_urad")] = picometres(t.range_urad);
-        tilts.append(o);
-    }
-    return {{QStringLiteral("evaluation"), QStringLiteral("drift probes")},
-            {QStringLiteral("probes"), probes},
-            {QStringLiteral("tilts"), tilts},
-            {QStringLiteral("stabilised"), !std::isnan(e.stabilised_time_s)},
-            {QStringLiteral("stabilised_time_s"), jsonNumber(e.stabilised_time_s)},
-            {QStringLiteral("notes"), QJsonArray::fromStringList(e.notes)},
-            {QStringLiteral("warnings"), QJsonArray::fromStringList(e.warnings)}};
 }
 
 QString row(const QString& head, const iso::DriftSeries& s) {
@@ -248,23 +161,18 @@ int iso230_3Command(const QStringList& args) {
                       .arg(settings.window_s));
     for (const Run* run : chosen) {
         const QString label = QStringLiteral("run %1 (%2)").arg(run->id, toString(run->kind));
-        QJsonObject o;
-        iso::DriftFigures figures;
-        if (hasAxisDrift(*run)) {
-            const iso::AxisDriftEvaluation e = iso::evaluateAxisDrift(*run, settings);
-            if (!e.ok()) throw CliError(e.error);
-            printWarnings(e.warnings);
-            if (!json) printLine(QString()), printAxis(e, label);
-            o = axisJson(e);
-            figures = iso::driftFigures(e);
-        } else {
-            const iso::ProbeDriftEvaluation e = iso::evaluateProbeDrift(campaign, *run, settings);
-            if (!e.ok()) throw CliError(e.error);
-            printWarnings(e.warnings);
-            if (!json) printLine(QString()), printProbes(e, label);
-            o = probesJson(e);
-            figures = iso::driftFigures(e);
+        const iso::RunDrift drift = iso::evaluateRunDrift(campaign, *run, settings);
+        if (!drift.ok()) throw CliError(drift.error);
+        printWarnings(drift.warnings());
+        if (!json) {
+            printLine(QString());
+            if (drift.axis)
+                printAxis(*drift.axis, label);
+            else
+                printProbes(*drift.probes, label);
         }
+        QJsonObject o = iso::runDriftJson(drift);
+        const iso::DriftFigures figures = drift.figures();
         if (spec) {
             const auto decisions = iso::driftDecisions(*spec, campaign.machine.axis, figures);
             o[QStringLiteral("acceptance")] =

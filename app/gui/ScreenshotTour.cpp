@@ -11,11 +11,12 @@
 namespace driftlab::gui {
 namespace {
 
-/// "ISO 230-2" → "iso230-2", "Set-up" → "setup".
+/// "ISO 230-2" → "iso230-2", "Sensor health" → "sensor-health", "Set-up" → "setup".
 QString fileStem(const QString& tabText) {
     QString stem = tabText.toLower();
-    stem.remove(QLatin1Char(' '));
     stem.remove(QLatin1Char('&'));
+    stem.replace(QStringLiteral("iso "), QStringLiteral("iso"));
+    stem.replace(QLatin1Char(' '), QLatin1Char('-'));
     return stem == QLatin1String("set-up") ? QStringLiteral("setup") : stem;
 }
 

@@ -1,13 +1,15 @@
 // Sensor flags in the store (schema v5): a run's findings stored as ranges and
 // read back by run name, replaced when the run is checked again, gone with
 // the run; a v4 store migrates to v5 with its data, and a v4 store read
-// without migrating has no flags (rather than an error).
+// without migrating has no flags (rather than an error); a v6 store migrates
+// to v7, where a flagged stretch the user keeps is used by the models.
 #include <gtest/gtest.h>
 #include <QSqlQuery>
 #include <QTemporaryDir>
 
 #include "core/bundle/BundleReader.h"
 #include "db/CampaignStore.h"
+#include "db/FlaggedSampleMask.h"
 #include "db/SampleFlagStore.h"
 #include "db/SchemaMigrations.h"
 #include "tests/db/StoreTestSupport.h"
@@ -157,4 +159,70 @@ TEST(SampleFlagStore, aV4StoreMigratesToV5AndReadOnlyItSimplyHasNoFlags) {
             "INSERT INTO sample_flag (run_id, channel, kind, from_t, to_t) VALUES (%1, 'T_nut', "
             "'bad_luck', 0, 1)")
             .arg(*s1)));
+}
+
+TEST(SampleFlagStore, aV6StoreMigratesToV7AndAKeptStretchIsUsedUntilMaskedAgain) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("v6.sqlite"));
+    QString error;
+    const Campaign shorted = campaignWithShortedSensor();
+    {
+        auto store = newStore(path);
+        const auto id = store->importCampaign(shorted, &error);
+        ASSERT_TRUE(id) << qPrintable(error);
+        const auto s1 = db::runDbId(*store, *id, QStringLiteral("S1"), &error);
+        ASSERT_TRUE(s1 && db::flagRun(*store, *s1, {}, &error)) << qPrintable(error);
+    }
+    // As a build of schema v6 left it: the flag stored, no keep choice.
+    rawSql(path, {QStringLiteral("ALTER TABLE sample_flag DROP COLUMN kept"),
+                  QStringLiteral("PRAGMA user_version = 6"),
+                  QStringLiteral("PRAGMA journal_mode = DELETE")});
+    const auto leftOut = [&](CampaignStore& store) {
+        Campaign c = shorted;
+        const auto masked = db::leaveOutFlaggedSamples(store, 1, c, &error);
+        EXPECT_TRUE(masked) << qPrintable(error);
+        return masked.value_or(db::MaskedSamples{});
+    };
+    {
+        auto readOnly = CampaignStore::open(path, db::StoreAccess::ReadOnly, &error);
+        ASSERT_TRUE(readOnly) << qPrintable(error);
+        EXPECT_EQ(db::schemaVersion(readOnly->database()), 6);
+        const auto flags = db::loadStoredFlags(*readOnly, 1, &error);
+        ASSERT_TRUE(flags) << qPrintable(error);
+        ASSERT_EQ(flags->at(QStringLiteral("S1")).size(), 1u);
+        EXPECT_FALSE(flags->at(QStringLiteral("S1")).front().kept);
+        EXPECT_EQ(leftOut(*readOnly).samples, 6u);
+        EXPECT_FALSE(db::setFlagsKept(*readOnly, {flags->at(QStringLiteral("S1")).front().id}, true,
+                                      &error));
+        EXPECT_TRUE(error.contains(QStringLiteral("read-only"))) << qPrintable(error);
+    }
+    auto store = CampaignStore::open(path, db::StoreAccess::ReadWrite, &error);
+    ASSERT_TRUE(store) << qPrintable(error);
+    EXPECT_EQ(db::schemaVersion(store->database()), db::latestSchemaVersion());
+    EXPECT_GE(db::latestSchemaVersion(), 7);
+    const qint64 flag = db::loadStoredFlags(*store, 1, &error)->at(QStringLiteral("S1")).front().id;
+    EXPECT_EQ(leftOut(*store).samples, 6u);  // an old flag is left out, as before
+
+    ASSERT_TRUE(db::setFlagsKept(*store, {flag}, true, &error)) << qPrintable(error);
+    db::MaskedSamples masked = leftOut(*store);
+    EXPECT_EQ(masked.samples, 0u);
+    EXPECT_EQ(masked.kept, 1u);
+    EXPECT_TRUE(masked.describe().contains(QStringLiteral("1 flagged stretch(es) kept")));
+    // Checked again, the same stretch is found again and stays kept.
+    const auto s1 = db::runDbId(*store, 1, QStringLiteral("S1"), &error);
+    ASSERT_TRUE(s1 && db::flagRun(*store, *s1, {}, &error)) << qPrintable(error);
+    const db::StoredFlag again =
+        db::loadStoredFlags(*store, 1, &error)->at(QStringLiteral("S1")).front();
+    EXPECT_TRUE(again.kept);
+
+    ASSERT_TRUE(db::setFlagsKept(*store, {again.id}, false, &error)) << qPrintable(error);
+    masked = leftOut(*store);
+    EXPECT_EQ(masked.samples, 6u);
+    EXPECT_EQ(masked.kept, 0u);
+    EXPECT_TRUE(masked.describe().contains(QStringLiteral("T_bearing_fixed out_of_range")))
+        << qPrintable(masked.describe());
+    // An unknown flag changes nothing and is named.
+    EXPECT_FALSE(db::setFlagsKept(*store, {again.id, 9999}, true, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("sensor flag 9999"))) << qPrintable(error);
+    EXPECT_FALSE(db::loadStoredFlags(*store, 1, &error)->at(QStringLiteral("S1")).front().kept);
 }

@@ -9,6 +9,7 @@
 #include "core/bundle/BundleReader.h"
 #include "db/CampaignImport.h"
 #include "db/CampaignStore.h"
+#include "db/SampleFlagStore.h"
 #include "db/SchemaMigrations.h"
 #include "db/StoreBackend.h"
 #include "db/ZipBundleSource.h"
@@ -138,6 +139,38 @@ TEST_P(BothBackEnds, aBadBundleImportsNothing) {
     EXPECT_TRUE(result.error.contains(QStringLiteral("samples.csv"))) << qPrintable(result.error);
     EXPECT_TRUE(store->listCampaigns().empty());
     EXPECT_EQ(count(*store, QStringLiteral("sample_block")), 0);
+}
+
+TEST_P(BothBackEnds, aKeptFlagStaysKeptAcrossConnectionsAndAReCheck) {
+    auto store = openForWriting();
+    ASSERT_TRUE(store);
+    QString error;
+    const auto id = store->importCampaign(exampleCampaign(), &error);
+    ASSERT_TRUE(id) << qPrintable(error);
+    const auto s1 = db::runDbId(*store, *id, QStringLiteral("S1"), &error);
+    ASSERT_TRUE(s1) << qPrintable(error);
+    const std::vector<sensors::FlaggedRange> ranges{
+        {QStringLiteral("T_nut"), sensors::SensorFault::Spike, 10, 10},
+        {QStringLiteral("T_nut"), sensors::SensorFault::Frozen, 100, 200}};
+    ASSERT_TRUE(db::replaceRunFlags(*store, *s1, ranges, &error)) << qPrintable(error);
+    const auto stored = [&] {
+        auto reader = CampaignStore::open(m_location, StoreAccess::ReadOnly, &error);
+        EXPECT_TRUE(reader) << qPrintable(error);
+        const auto flags = db::loadStoredFlags(*reader, *id, &error);
+        EXPECT_TRUE(flags) << qPrintable(error);
+        return flags->at(QStringLiteral("S1"));
+    };
+    ASSERT_EQ(stored().size(), 2u);
+    EXPECT_FALSE(stored()[0].kept || stored()[1].kept);  // every flag is left out at first
+    ASSERT_TRUE(db::setFlagsKept(*store, {stored()[1].id}, true, &error)) << qPrintable(error);
+    EXPECT_FALSE(stored()[0].kept);
+    EXPECT_TRUE(stored()[1].kept);
+    // Found again by a re-check: the choice stays with its stretch.
+    ASSERT_TRUE(db::replaceRunFlags(*store, *s1, ranges, &error)) << qPrintable(error);
+    EXPECT_FALSE(stored()[0].kept);
+    EXPECT_TRUE(stored()[1].kept);
+    ASSERT_TRUE(db::setFlagsKept(*store, {stored()[1].id}, false, &error)) << qPrintable(error);
+    EXPECT_FALSE(stored()[1].kept);
 }
 
 TEST_P(BothBackEnds, migrationsGiveTheSameSchemaVersion) {

@@ -293,10 +293,13 @@ void ModelsPage::showFit(const FitOutcome& outcome, const QString& model) {
     m_notes->setText(shown.join(QStringLiteral("<br>")));
     m_predictions->setPredictions(model, outcome.runs);
     if (outcome.fit_id) {
-        report(QStringLiteral("info"), tr("Fitted %1: held-out RMS %2 µm; stored as fit %3.")
-                                           .arg(model)
-                                           .arg(outcome.pooled.rms_um, 0, 'f', 2)
-                                           .arg(*outcome.fit_id));
+        // The log names what the fit did not see (flagged samples left out).
+        report(QStringLiteral("info"),
+               tr("Fitted %1: held-out RMS %2 µm; stored as fit %3.%4")
+                   .arg(model)
+                   .arg(outcome.pooled.rms_um, 0, 'f', 2)
+                   .arg(*outcome.fit_id)
+                   .arg(outcome.note.isEmpty() ? QString() : QStringLiteral(" ") + outcome.note));
         m_session.notifyStoreChanged();
     } else {
         report(QStringLiteral("error"),

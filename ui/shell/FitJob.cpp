@@ -15,10 +15,7 @@ std::optional<Campaign> loadCampaignForModels(const QString& storePath, qint64 c
     if (!campaign) return std::nullopt;
     const auto masked = db::leaveOutFlaggedSamples(*store, campaignId, *campaign, error);
     if (!masked) return std::nullopt;
-    if (masked->flagged)
-        *note = QObject::tr("%1 flagged samples of %2 channel(s) left out")
-                    .arg(masked->samples)
-                    .arg(masked->channels.size());
+    if (masked->flagged) *note = masked->describe();
     return campaign;
 }
 

@@ -23,8 +23,10 @@
 #include "ui/pages/CompensationPage.h"
 #include "ui/pages/DiagnosisPage.h"
 #include "ui/pages/Iso230_2Page.h"
+#include "ui/pages/Iso230_3Page.h"
 #include "ui/pages/ModelsPage.h"
 #include "ui/pages/RunPage.h"
+#include "ui/pages/SensorHealthPage.h"
 #include "ui/pages/SetupPage.h"
 #include "ui/shell/ReportExport.h"
 #include "ui/shell/Session.h"
@@ -50,6 +52,8 @@ MainWindow::MainWindow(QWidget* parent)
     m_diagnosis = new DiagnosisPage(*m_session, m_tabs);
     m_compensation = new CompensationPage(*m_session, m_tabs);
     m_iso = new Iso230_2Page(*m_session, m_tabs);
+    m_iso3 = new Iso230_3Page(*m_session, m_tabs);
+    m_health = new SensorHealthPage(*m_session, m_tabs);
     m_report = new ReportExport(*m_session, this);
     m_tabs->addTab(m_setup, tr("Set-up"));
     m_tabs->addTab(m_run, tr("Run"));
@@ -57,6 +61,8 @@ MainWindow::MainWindow(QWidget* parent)
     m_tabs->addTab(m_diagnosis, tr("Diagnosis"));
     m_tabs->addTab(m_compensation, tr("Compensation"));
     m_tabs->addTab(m_iso, tr("ISO 230-2"));
+    m_tabs->addTab(m_iso3, tr("ISO 230-3"));
+    m_tabs->addTab(m_health, tr("Sensor health"));
     setCentralWidget(m_tabs);
     buildDocks();
     buildMenus();

@@ -22,6 +22,8 @@ class ModelsPage;
 class DiagnosisPage;
 class CompensationPage;
 class Iso230_2Page;
+class Iso230_3Page;
+class SensorHealthPage;
 class ReportExport;
 
 class MainWindow : public QMainWindow {
@@ -40,6 +42,8 @@ public:
     DiagnosisPage* diagnosisPage() const { return m_diagnosis; }
     CompensationPage* compensationPage() const { return m_compensation; }
     Iso230_2Page* iso230_2Page() const { return m_iso; }
+    Iso230_3Page* iso230_3Page() const { return m_iso3; }
+    SensorHealthPage* sensorHealthPage() const { return m_health; }
     /// File → Export report…: the acceptance report of the selected campaign.
     ReportExport* reportExport() const { return m_report; }
 
@@ -74,6 +78,8 @@ private:
     DiagnosisPage* m_diagnosis;
     CompensationPage* m_compensation;
     Iso230_2Page* m_iso;
+    Iso230_3Page* m_iso3;
+    SensorHealthPage* m_health;
     ReportExport* m_report;
 };
 
