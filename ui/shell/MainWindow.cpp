@@ -4,7 +4,10 @@
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QHeaderView>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -26,6 +29,8 @@
 #include "ui/pages/ModelsPage.h"
 #include "ui/pages/RunPage.h"
 #include "ui/pages/SetupPage.h"
+#include "ui/shell/CampaignExportFlow.h"
+#include "ui/shell/CampaignImportFlow.h"
 #include "ui/shell/ReportExport.h"
 #include "ui/shell/Session.h"
 
@@ -51,6 +56,9 @@ MainWindow::MainWindow(QWidget* parent)
     m_compensation = new CompensationPage(*m_session, m_tabs);
     m_iso = new Iso230_2Page(*m_session, m_tabs);
     m_report = new ReportExport(*m_session, this);
+    m_import = new CampaignImportFlow(*m_session, this);
+    m_export = new CampaignExportFlow(*m_session, this);
+    setAcceptDrops(true);
     m_tabs->addTab(m_setup, tr("Set-up"));
     m_tabs->addTab(m_run, tr("Run"));
     m_tabs->addTab(m_models, tr("Models"));
@@ -129,6 +137,21 @@ void MainWindow::buildMenus() {
     });
     m_recent = file->addMenu(tr("Recent stores"));
     file->addSeparator();
+    QAction* import = file->addAction(tr("&Import campaign…"), QKeySequence(Qt::CTRL | Qt::Key_I),
+                                      this, &MainWindow::chooseCampaignToImport);
+    import->setObjectName(QStringLiteral("ImportCampaignAction"));
+    QAction* exportBundle =
+        file->addAction(tr("Export &campaign…"), this, &MainWindow::exportCampaign);
+    exportBundle->setObjectName(QStringLiteral("ExportCampaignAction"));
+    exportBundle->setEnabled(false);
+    connect(m_session, &Session::campaignSelected, exportBundle,
+            [exportBundle](std::optional<qint64> id) { exportBundle->setEnabled(id.has_value()); });
+    connect(m_export, &CampaignExportFlow::finished, this,
+            [this](bool written, const QString& message) {
+                statusBar()->showMessage(written ? tr("Campaign exported: %1").arg(message)
+                                                 : tr("Campaign not exported: %1").arg(message),
+                                         10'000);
+            });
     QAction* report = file->addAction(tr("&Export report…"), this, &MainWindow::exportReport);
     report->setObjectName(QStringLiteral("ExportReportAction"));
     report->setEnabled(false);
@@ -203,6 +226,48 @@ void MainWindow::exportReport() {
     const QString path =
         QFileDialog::getSaveFileName(this, tr("Export acceptance report"), {}, tr("PDF (*.pdf)"));
     if (!path.isEmpty()) m_report->start(path);
+}
+
+void MainWindow::chooseCampaignToImport() {
+    // One dialog for both forms of a bundle: its .zip, or the campaign.json
+    // that names its folder (a file dialog picks files or folders, not both).
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import campaign"), {},
+        tr("Campaign bundles (*.zip campaign.json);;Bundle archives (*.zip);;Bundle folders "
+           "(campaign.json)"));
+    if (path.isEmpty()) return;
+    const QFileInfo chosen(path);
+    importCampaign(chosen.fileName() == QLatin1String("campaign.json") ? chosen.absolutePath()
+                                                                       : path);
+}
+
+void MainWindow::importCampaign(const QString& path) {
+    QString why;
+    if (!m_import->start(path, &why)) {
+        m_events->append(QStringLiteral("error"), QStringLiteral("import"),
+                         tr("%1 not imported: %2").arg(path, why));
+        QMessageBox::warning(this, tr("Campaign not imported"), why);
+    }
+}
+
+void MainWindow::exportCampaign() {
+    const auto id = m_session->campaignId();
+    if (!id) return;
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export campaign as a bundle folder (new or empty)"),
+                                     QStringLiteral("campaign-%1").arg(*id));
+    if (!path.isEmpty()) m_export->start(path);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (CampaignImportFlow::bundleOf(event->mimeData())) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const auto path = CampaignImportFlow::bundleOf(event->mimeData());
+    if (!path) return;
+    event->acceptProposedAction();
+    importCampaign(*path);
 }
 
 void MainWindow::startDemo() {

@@ -2,7 +2,8 @@
 // The main window (docs/gui-setup.md): the campaign tree in a dock on the
 // left, the pages as tabs in the centre (Set-up, Run, Models, Diagnosis,
 // Compensation, ISO 230-2), the event log in a dock below, run control in a
-// tool bar and the run state in the status bar. Window layout, the last
+// tool bar and the run state in the status bar; a bundle folder or .zip
+// dropped on the window is imported (docs/gui-data.md). Window layout, the last
 // store and the recent stores persist with QSettings.
 
 #include <QMainWindow>
@@ -23,6 +24,8 @@ class DiagnosisPage;
 class CompensationPage;
 class Iso230_2Page;
 class ReportExport;
+class CampaignImportFlow;
+class CampaignExportFlow;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -42,6 +45,10 @@ public:
     Iso230_2Page* iso230_2Page() const { return m_iso; }
     /// File → Export report…: the acceptance report of the selected campaign.
     ReportExport* reportExport() const { return m_report; }
+    /// File → Import campaign… and bundles dropped on the window.
+    CampaignImportFlow* importFlow() const { return m_import; }
+    /// File → Export campaign…: the selected campaign as a bundle folder.
+    CampaignExportFlow* exportFlow() const { return m_export; }
 
     /// Opens a store (creating it when `create`); errors go to the event log
     /// and, with `tellUser`, to a message box.
@@ -54,6 +61,8 @@ public slots:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void buildMenus();
@@ -61,6 +70,9 @@ private:
     void rememberStore(const QString& path);
     void updateRecentMenu();
     void exportReport();
+    void importCampaign(const QString& path);
+    void chooseCampaignToImport();
+    void exportCampaign();
 
     Session* m_session;
     CampaignTreeModel* m_tree;
@@ -75,6 +87,8 @@ private:
     CompensationPage* m_compensation;
     Iso230_2Page* m_iso;
     ReportExport* m_report;
+    CampaignImportFlow* m_import;
+    CampaignExportFlow* m_export;
 };
 
 }  // namespace driftlab::ui
