@@ -20,6 +20,7 @@
 #include <QTreeView>
 
 #include "db/CampaignStore.h"
+#include "db/StoreBackend.h"
 #include "db/StoreOverview.h"
 #include "ui/models/CampaignTreeModel.h"
 #include "ui/models/EventLogModel.h"
@@ -33,6 +34,7 @@
 #include "ui/shell/CampaignImportFlow.h"
 #include "ui/shell/ReportExport.h"
 #include "ui/shell/Session.h"
+#include "ui/widgets/LabStoreDialog.h"
 
 namespace driftlab::ui {
 namespace {
@@ -58,6 +60,8 @@ MainWindow::MainWindow(QWidget* parent)
     m_report = new ReportExport(*m_session, this);
     m_import = new CampaignImportFlow(*m_session, this);
     m_export = new CampaignExportFlow(*m_session, this);
+    m_labStore =
+        new LabStoreDialog([this](const QString& url) { return openStore(url, false); }, this);
     setAcceptDrops(true);
     m_tabs->addTab(m_setup, tr("Set-up"));
     m_tabs->addTab(m_run, tr("Run"));
@@ -76,7 +80,9 @@ MainWindow::MainWindow(QWidget* parent)
 
     connect(m_session, &Session::event, m_events, &EventLogModel::append);
     connect(m_session, &Session::storeChanged, this, [this](const QString& path) {
-        setWindowTitle(tr("DriftLab — %1").arg(path));
+        const auto server =
+            db::isServerStoreUrl(path) ? db::parseServerStoreUrl(path, nullptr) : std::nullopt;
+        setWindowTitle(tr("DriftLab — %1").arg(server ? server->display() : path));
         refreshCampaignTree();
     });
     connect(m_session, &Session::storeContentChanged, this, &MainWindow::refreshCampaignTree);
@@ -135,6 +141,11 @@ void MainWindow::buildMenus() {
                                                           tr("DriftLab stores (*.sqlite)"));
         if (!path.isEmpty()) openStore(path, false);
     });
+    QAction* lab = file->addAction(tr("Open &lab store…"), this, [this] {
+        m_labStore->show();
+        m_labStore->raise();
+    });
+    lab->setObjectName(QStringLiteral("OpenLabStoreAction"));
     m_recent = file->addMenu(tr("Recent stores"));
     file->addSeparator();
     QAction* import = file->addAction(tr("&Import campaign…"), QKeySequence(Qt::CTRL | Qt::Key_I),
@@ -184,7 +195,10 @@ bool MainWindow::openStore(const QString& path, bool create, bool tellUser) {
         if (tellUser) QMessageBox::warning(this, tr("Store not opened"), error);
         return false;
     }
-    rememberStore(m_session->storePath());
+    // A lab store is remembered without its password (~/.pgpass holds that).
+    const auto server =
+        db::isServerStoreUrl(path) ? db::parseServerStoreUrl(path, nullptr) : std::nullopt;
+    rememberStore(server ? server->display() : m_session->storePath());
     return true;
 }
 

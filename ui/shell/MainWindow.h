@@ -26,6 +26,7 @@ class Iso230_2Page;
 class ReportExport;
 class CampaignImportFlow;
 class CampaignExportFlow;
+class LabStoreDialog;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -49,6 +50,8 @@ public:
     CampaignImportFlow* importFlow() const { return m_import; }
     /// File → Export campaign…: the selected campaign as a bundle folder.
     CampaignExportFlow* exportFlow() const { return m_export; }
+    /// File → Open lab store…: a postgresql:// store and its spool.
+    LabStoreDialog* labStoreDialog() const { return m_labStore; }
 
     /// Opens a store (creating it when `create`); errors go to the event log
     /// and, with `tellUser`, to a message box.
@@ -89,6 +92,7 @@ private:
     ReportExport* m_report;
     CampaignImportFlow* m_import;
     CampaignExportFlow* m_export;
+    LabStoreDialog* m_labStore;
 };
 
 }  // namespace driftlab::ui
