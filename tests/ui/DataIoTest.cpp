@@ -83,6 +83,22 @@ QString copyExample(const QString& dir) {
     return dir;
 }
 
+/// The example with line 3, column 3 of samples.csv spoiled (a temperature
+/// that is not a number).
+QString spoiledExample(const QString& dir) {
+    copyExample(dir);
+    QFile samples(QDir(dir).filePath(QStringLiteral("samples.csv")));
+    EXPECT_TRUE(samples.open(QIODevice::ReadOnly));
+    QList<QByteArray> lines = samples.readAll().split('\n');
+    samples.close();
+    QList<QByteArray> cells = lines[2].split(',');
+    cells[2] = "warm";
+    lines[2] = cells.join(',');
+    EXPECT_TRUE(samples.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    samples.write(lines.join('\n'));
+    return dir;
+}
+
 TEST(DataIo, importsTheExampleFolderAndSelectsItsCampaign) {
     DataIoFixture f;
     const auto id = f.import(kExample);
@@ -120,19 +136,7 @@ TEST(DataIo, aBadBundleListsItsErrorsAndLeavesTheStoreAsItWas) {
     ASSERT_TRUE(f.import(kExample));
     const QStringList before = campaignsOf(f.store);
     const QByteArray hash = sha256Of(f.store);
-    // Line 3, column 3 of samples.csv spoiled (a temperature that is not a number).
-    const QString bad = copyExample(f.dir.filePath(QStringLiteral("bad")));
-    QFile samples(QDir(bad).filePath(QStringLiteral("samples.csv")));
-    ASSERT_TRUE(samples.open(QIODevice::ReadOnly));
-    QList<QByteArray> lines = samples.readAll().split('\n');
-    samples.close();
-    QList<QByteArray> cells = lines[2].split(',');
-    cells[2] = "warm";
-    lines[2] = cells.join(',');
-    ASSERT_TRUE(samples.open(QIODevice::WriteOnly | QIODevice::Truncate));
-    samples.write(lines.join('\n'));
-    samples.close();
-
+    const QString bad = spoiledExample(f.dir.filePath(QStringLiteral("bad")));
     EXPECT_FALSE(f.import(bad));
     ui::ImportProblemsDialog* dialog = f.window.importFlow()->problemsDialog();
     ASSERT_TRUE(dialog->isVisible());
@@ -140,7 +144,7 @@ TEST(DataIo, aBadBundleListsItsErrorsAndLeavesTheStoreAsItWas) {
     ASSERT_GE(model->rowCount(), 1);
     const ui::ImportProblem& first = model->problem(0);
     EXPECT_EQ(first.level, QStringLiteral("error"));
-    EXPECT_TRUE(first.file.endsWith(QStringLiteral("samples.csv"))) << first.file.toStdString();
+    EXPECT_EQ(first.file, QStringLiteral("samples.csv"));  // relative to the bundle
     EXPECT_EQ(first.line, 3);
     EXPECT_EQ(first.column, 3);
     EXPECT_TRUE(first.message.contains(QStringLiteral("warm"))) << first.message.toStdString();
@@ -204,4 +208,23 @@ TEST(DataIo, aBundleDroppedOnTheWindowIsImported) {
     refused.setAccepted(false);
     QCoreApplication::sendEvent(&f.window, &refused);
     EXPECT_FALSE(refused.isAccepted());
+}
+
+// The import dialog's error list, for docs/gui-data.md: run
+// under a real X server with DRIFTLAB_SCREENSHOT_DIR set,
+//   DRIFTLAB_SCREENSHOT_DIR=docs/images xvfb-run -a -s "-screen 0 1280x800x24"
+//     build/tests/ui/ui_dataio_tests --gtest_filter='Screenshots.*'
+TEST(Screenshots, importErrors) {
+    const QString out = qEnvironmentVariable("DRIFTLAB_SCREENSHOT_DIR");
+    if (out.isEmpty()) GTEST_SKIP() << "set DRIFTLAB_SCREENSHOT_DIR to take the screenshot";
+    DataIoFixture f;
+    f.window.resize(1280, 800);
+    f.window.move(0, 0);
+    f.window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&f.window));
+    ASSERT_TRUE(f.import(kExample));
+    EXPECT_FALSE(f.import(spoiledExample(f.dir.filePath(QStringLiteral("x-axis-moving-state")))));
+    ui::ImportProblemsDialog* dialog = f.window.importFlow()->problemsDialog();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
+    EXPECT_TRUE(dialog->grab().save(out + QStringLiteral("/gui-import.png")));
 }

@@ -18,13 +18,18 @@ ImportProblem parseImportProblem(const QString& level, const QString& text) {
 
 ImportProblemsModel::ImportProblemsModel(QObject* parent) : QAbstractTableModel(parent) {}
 
-void ImportProblemsModel::setProblems(const QStringList& errors, const QStringList& warnings) {
+void ImportProblemsModel::setProblems(const QStringList& errors, const QStringList& warnings,
+                                      const QString& bundle) {
     beginResetModel();
     m_problems.clear();
-    for (const QString& e : errors)
-        m_problems.push_back(parseImportProblem(QStringLiteral("error"), e));
-    for (const QString& w : warnings)
-        m_problems.push_back(parseImportProblem(QStringLiteral("warning"), w));
+    const QString prefix = bundle.isEmpty() ? QString() : bundle + QLatin1Char('/');
+    auto add = [&](const QString& level, const QString& text) {
+        ImportProblem p = parseImportProblem(level, text);
+        if (!prefix.isEmpty() && p.file.startsWith(prefix)) p.file.remove(0, prefix.size());
+        m_problems.push_back(std::move(p));
+    };
+    for (const QString& e : errors) add(QStringLiteral("error"), e);
+    for (const QString& w : warnings) add(QStringLiteral("warning"), w);
     endResetModel();
 }
 

@@ -29,8 +29,10 @@ public:
 
     explicit ImportProblemsModel(QObject* parent = nullptr);
 
-    /// The refusal's errors first, then the warnings read on the way.
-    void setProblems(const QStringList& errors, const QStringList& warnings);
+    /// The refusal's errors first, then the warnings read on the way; files
+    /// inside `bundle` are shown relative to it (samples.csv, not its whole path).
+    void setProblems(const QStringList& errors, const QStringList& warnings,
+                     const QString& bundle = {});
     const ImportProblem& problem(int row) const { return m_problems[std::size_t(row)]; }
 
     int rowCount(const QModelIndex& parent = {}) const override;

@@ -35,17 +35,18 @@ ImportProblemsDialog::ImportProblemsDialog(QWidget* parent)
     layout->addWidget(m_summary);
     layout->addWidget(m_view, 1);
     layout->addWidget(buttons);
-    resize(860, 320);
+    resize(820, 240);
 }
 
 void ImportProblemsDialog::showProblems(const QString& source, const QString& store,
                                         const QStringList& errors, const QStringList& warnings) {
-    m_model->setProblems(errors, warnings);
+    m_model->setProblems(errors, warnings, source);
     m_summary->setText(
         tr("<b>%1</b> was not imported: nothing was stored in %2. Fix the file where the "
            "list below says, then import it again.")
             .arg(QFileInfo(source).fileName().toHtmlEscaped(), store.toHtmlEscaped()));
     m_view->resizeRowsToContents();
+    m_view->setCurrentIndex({});
     open();  // window-modal, not exec(): the window's event loop goes on
 }
 
