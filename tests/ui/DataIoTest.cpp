@@ -99,6 +99,24 @@ QString spoiledExample(const QString& dir) {
     return dir;
 }
 
+TEST(DataIo, problemsAreSplitIntoFileLineColumnAndMessage) {
+    const auto full = ui::parseImportProblem(QStringLiteral("error"),
+                                             QStringLiteral("b/samples.csv:12:4: not a number"));
+    EXPECT_EQ(full.file, QStringLiteral("b/samples.csv"));
+    EXPECT_EQ(full.line, 12);
+    EXPECT_EQ(full.column, 4);
+    EXPECT_EQ(full.message, QStringLiteral("not a number"));
+    const auto lineOnly = ui::parseImportProblem(
+        QStringLiteral("warning"), QStringLiteral("campaign.json:7: unknown key 'x'"));
+    EXPECT_EQ(lineOnly.line, 7);
+    EXPECT_EQ(lineOnly.column, 0);
+    EXPECT_EQ(lineOnly.message, QStringLiteral("unknown key 'x'"));
+    const auto nowhere =
+        ui::parseImportProblem(QStringLiteral("error"), QStringLiteral("import cancelled"));
+    EXPECT_TRUE(nowhere.file.isEmpty());
+    EXPECT_EQ(nowhere.message, QStringLiteral("import cancelled"));
+}
+
 TEST(DataIo, importsTheExampleFolderAndSelectsItsCampaign) {
     DataIoFixture f;
     const auto id = f.import(kExample);

@@ -5,6 +5,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QShowEvent>
 #include <QVBoxLayout>
 
 #include "db/SpoolFile.h"
@@ -26,8 +27,6 @@ LabStoreDialog::LabStoreDialog(std::function<bool(const QString&)> openStore, QW
     setWindowTitle(tr("Open lab store"));
     m_url->setPlaceholderText(QStringLiteral("postgresql://driftlab@db1/drift"));
     m_url->setToolTip(tr("The password belongs in ~/.pgpass, not in the URL"));
-    QString error;
-    m_spool->setText(db::defaultSpoolPath(&error));
     m_spool->setToolTip(
         tr("The local SQLite store a rig logs into before the server has the rows"));
     m_state->setWordWrap(true);
@@ -55,6 +54,15 @@ LabStoreDialog::LabStoreDialog(std::function<bool(const QString&)> openStore, QW
         m_state->setText(text);
         m_upload->setEnabled(true);
     });
+}
+
+void LabStoreDialog::showEvent(QShowEvent* event) {
+    // Filled when first shown, not at start-up: finding the default creates its folder.
+    if (m_spool->text().isEmpty()) {
+        QString error;
+        m_spool->setText(db::defaultSpoolPath(&error));
+    }
+    QDialog::showEvent(event);
 }
 
 QString LabStoreDialog::stateText() const {

@@ -29,6 +29,9 @@ public:
     SpoolSync* spoolSync() const { return m_sync; }
     QString stateText() const;
 
+protected:
+    void showEvent(QShowEvent* event) override;
+
 private:
     void openLabStore();
 
