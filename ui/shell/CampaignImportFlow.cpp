@@ -14,11 +14,6 @@
 #include "ui/widgets/ImportProblemsDialog.h"
 
 namespace driftlab::ui {
-namespace {
-
-constexpr int kImportSteps = 1000;
-/// The check reads the bundle once, the import once more: half each.
-constexpr double kCheckShare = 0.5;
 
 struct ImportOutcome {
     std::optional<qint64> campaignId;
@@ -26,6 +21,12 @@ struct ImportOutcome {
     QString error;  ///< why nothing was stored; empty when stored or cancelled
     QStringList warnings;
 };
+
+namespace {
+
+constexpr int kImportSteps = 1000;
+/// The check reads the bundle once, the import once more: half each.
+constexpr double kCheckShare = 0.5;
 
 /// Both passes, on the worker: connections of its own (a QSqlDatabase
 /// belongs to its thread), the store opened for writing only for a good bundle.
@@ -116,31 +117,33 @@ bool CampaignImportFlow::start(const QString& path, QString* why) {
     auto outcome = std::make_shared<ImportOutcome>();
     m_job->start([path, store,
                   outcome](JobControl& control) { importOnWorker(path, store, control, *outcome); },
-                 [this, path, store, outcome] {
-                     m_progress->hide();
-                     const QString source = QStringLiteral("import");
-                     for (const QString& w : outcome->warnings)
-                         emit m_session.event(QStringLiteral("warning"), source, w);
-                     if (outcome->campaignId) {
-                         emit m_session.event(QStringLiteral("info"), source,
-                                              tr("%1 imported as campaign %2 ('%3')")
-                                                  .arg(path)
-                                                  .arg(*outcome->campaignId)
-                                                  .arg(outcome->name));
-                         m_session.notifyStoreChanged();
-                         m_session.selectCampaign(outcome->campaignId);
-                     } else if (outcome->error.isEmpty()) {
-                         emit m_session.event(
-                             QStringLiteral("info"), source,
-                             tr("import of %1 cancelled: nothing stored").arg(path));
-                     } else {
-                         emit m_session.event(QStringLiteral("error"), source,
-                                              tr("%1 not imported: %2").arg(path, outcome->error));
-                         m_problems->showProblems(path, store, {outcome->error}, outcome->warnings);
-                     }
-                     emit finished(outcome->campaignId);
-                 });
+                 [this, path, store, outcome] { report(path, store, *outcome); });
     return true;
+}
+
+void CampaignImportFlow::report(const QString& path, const QString& store,
+                                const ImportOutcome& outcome) {
+    m_progress->hide();
+    const QString source = QStringLiteral("import");
+    for (const QString& w : outcome.warnings)
+        emit m_session.event(QStringLiteral("warning"), source, w);
+    if (outcome.campaignId) {
+        emit m_session.event(QStringLiteral("info"), source,
+                             tr("%1 imported as campaign %2 ('%3')")
+                                 .arg(path)
+                                 .arg(*outcome.campaignId)
+                                 .arg(outcome.name));
+        m_session.notifyStoreChanged();
+        m_session.selectCampaign(outcome.campaignId);
+    } else if (outcome.error.isEmpty()) {
+        emit m_session.event(QStringLiteral("info"), source,
+                             tr("import of %1 cancelled: nothing stored").arg(path));
+    } else {
+        emit m_session.event(QStringLiteral("error"), source,
+                             tr("%1 not imported: %2").arg(path, outcome.error));
+        m_problems->showProblems(path, store, {outcome.error}, outcome.warnings);
+    }
+    emit finished(outcome.campaignId);
 }
 
 std::optional<QString> CampaignImportFlow::bundleOf(const QMimeData* mime) {

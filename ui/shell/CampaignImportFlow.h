@@ -18,6 +18,7 @@ namespace driftlab::ui {
 
 class BackgroundJob;
 class ImportProblemsDialog;
+struct ImportOutcome;
 class Session;
 
 class CampaignImportFlow : public QObject {
@@ -42,6 +43,9 @@ signals:
     void finished(std::optional<qint64> campaignId);
 
 private:
+    /// Back on the GUI thread: the event log, the selection, or the problems.
+    void report(const QString& path, const QString& store, const ImportOutcome& outcome);
+
     Session& m_session;
     BackgroundJob* m_job;
     QProgressDialog* m_progress;

@@ -41,6 +41,14 @@ namespace {
 const QString kRecentKey = QStringLiteral("stores/recent");
 const QString kLastKey = QStringLiteral("stores/last");
 constexpr int kRecentCount = 8;
+
+/// A store as the window names it: a lab store's URL without its password
+/// (~/.pgpass holds that), a file as its path.
+QString shownStoreName(const QString& location) {
+    const auto server =
+        db::isServerStoreUrl(location) ? db::parseServerStoreUrl(location, nullptr) : std::nullopt;
+    return server ? server->display() : location;
+}
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -80,9 +88,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     connect(m_session, &Session::event, m_events, &EventLogModel::append);
     connect(m_session, &Session::storeChanged, this, [this](const QString& path) {
-        const auto server =
-            db::isServerStoreUrl(path) ? db::parseServerStoreUrl(path, nullptr) : std::nullopt;
-        setWindowTitle(tr("DriftLab — %1").arg(server ? server->display() : path));
+        setWindowTitle(tr("DriftLab — %1").arg(shownStoreName(path)));
         refreshCampaignTree();
     });
     connect(m_session, &Session::storeContentChanged, this, &MainWindow::refreshCampaignTree);
@@ -195,10 +201,7 @@ bool MainWindow::openStore(const QString& path, bool create, bool tellUser) {
         if (tellUser) QMessageBox::warning(this, tr("Store not opened"), error);
         return false;
     }
-    // A lab store is remembered without its password (~/.pgpass holds that).
-    const auto server =
-        db::isServerStoreUrl(path) ? db::parseServerStoreUrl(path, nullptr) : std::nullopt;
-    rememberStore(server ? server->display() : m_session->storePath());
+    rememberStore(shownStoreName(m_session->storePath()));
     return true;
 }
 
