@@ -1,14 +1,11 @@
 // sync, and the spool that `run --db postgresql://…` logs into.
 #include "app/cli/SpoolCommands.h"
 
-#include <QDir>
 #include <QFileInfo>
-#include <QStandardPaths>
 
 #include "app/cli/CliCommon.h"
 #include "db/CampaignStore.h"
-#include "db/RunLogger.h"
-#include "db/SpoolUpload.h"
+#include "db/SpoolFile.h"
 #include "db/StoreBackend.h"
 
 namespace driftlab::cli {
@@ -23,23 +20,15 @@ QCommandLineOption spoolOption() {
 
 QString spoolPath(const QCommandLineParser& parser, const QCommandLineOption& spool) {
     if (parser.isSet(spool)) return parser.value(spool);
-    const QString folder = QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation) +
-                           QStringLiteral("/driftlab");
-    if (!QDir().mkpath(folder))
-        throw CliError(
-            QStringLiteral("%1: cannot create the spool's folder (give --spool FILE)").arg(folder));
-    return folder + QStringLiteral("/spool.sqlite");
+    QString error;
+    const QString path = db::defaultSpoolPath(&error);
+    if (path.isEmpty()) throw CliError(error + QStringLiteral(" (give --spool FILE)"));
+    return path;
 }
 
 QString prepareSpool(const QString& path) {
     QString error;
-    if (!QFileInfo::exists(path)) {
-        auto created = db::CampaignStore::open(path, db::StoreAccess::CreateIfMissing, &error);
-        if (!created || !created->publish(&error)) throw CliError(error);
-    }
-    auto spool = db::CampaignStore::open(path, db::StoreAccess::ReadWrite, &error);
-    if (!spool) throw CliError(error);
-    const auto id = db::ensureSpoolId(*spool, &error);
+    const auto id = db::prepareSpool(path, &error);
     if (!id) throw CliError(error);
     return *id;
 }
@@ -58,20 +47,12 @@ int syncCommand(const QStringList& args) {
                            .arg(url),
                        2);
     const QString path = spoolPath(parser, spool);
+    // Said before the server is asked: a mistyped spool is the likelier fault.
     if (!QFileInfo::exists(path)) throw CliError(QStringLiteral("%1: no such spool").arg(path));
-    const QString id = prepareSpool(path);
     QString error;
-    {
-        // Runs whose logger died (crash, kill, power loss) go up as interrupted.
-        auto writable = db::CampaignStore::open(path, db::StoreAccess::ReadWrite, &error);
-        if (!writable) throw CliError(error);
-        db::markInterruptedRuns(*writable, &error);
-    }
-    auto source = db::CampaignStore::open(path, db::StoreAccess::ReadOnly, &error);
-    if (!source) throw CliError(error);
     auto server = db::CampaignStore::open(url, db::StoreAccess::ReadWrite, &error);
     if (!server) throw CliError(error);
-    const auto report = db::uploadSpool(*source, id, *server, &error);
+    const auto report = db::syncSpool(path, *server, &error);
     if (!report) throw CliError(error);
     if (parser.isSet(QStringLiteral("json")))
         printJson({{QStringLiteral("spool"), path},

@@ -23,6 +23,7 @@
 #include "ui/shell/RunController.h"
 #include "ui/shell/Session.h"
 #include "ui/widgets/PreRunChecklist.h"
+#include "ui/widgets/RunStatusWidget.h"
 
 using namespace driftlab;
 using engine::EngineState;
@@ -103,6 +104,28 @@ TEST(RunPage, pauseStopsTheRowsResumeGoesOnAndTheStoreHasTheCompleteRun) {
     EXPECT_LE(rows.time_s(0), step_s);
     EXPECT_DOUBLE_EQ(rows.time_s(rows.endRow() - 1), last.back());
     EXPECT_TRUE(page.startAction()->isEnabled());
+}
+
+TEST(RunPage, statusBarShowsTheProceduresOwnClockAfterTheRun) {
+    RunFixture f(0);  // unpaced: the simulated hours pass in a moment of wall time
+    ui::RunPage page(f.session);
+    ui::RunController& controller = page.controller();
+    QSignalSpy finished(&controller, &ui::RunController::finished);
+    page.startAction()->trigger();
+    ASSERT_TRUE(controller.active()) << page.checklist().problems().join(';').toStdString();
+    ASSERT_TRUE(finished.wait(60000) || finished.count() == 1);
+    ASSERT_TRUE(finished.first().first().toBool());
+    double planned_s = 0;
+    for (const auto& run : procedures::planRuns(f.session.runSetup().procedure))
+        planned_s += run.duration_s;
+    const double step_s = f.session.runSetup().procedure.sample_interval_s;
+    EXPECT_NEAR(controller.elapsed_s(), planned_s, 2 * step_s);
+    const auto* status = qobject_cast<ui::RunStatusWidget*>(page.statusWidget());
+    ASSERT_TRUE(status);
+    EXPECT_TRUE(status->text().contains(
+        QStringLiteral("elapsed %1").arg(ui::clockText(controller.elapsed_s()))))
+        << status->text().toStdString();
+    EXPECT_GT(planned_s, 3600.0);  // hours of run time, so a wall clock would show far less
 }
 
 TEST(RunPage, abortMidRunKeepsTheRunMarkedInterrupted) {

@@ -169,8 +169,7 @@ void RunPage::showProgress() {
                                    next ? tr("Next measurement at %1 (in %2)")
                                               .arg(clockText(*next), clockText(*next - p.time_s))
                                         : tr("No measurement due in this run")));
-    m_status->showRun(m_controller->state(), m_controller->active() ? m_controller->elapsed_s() : 0,
-                      next);
+    m_status->showRun(m_controller->state(), m_controller->elapsed_s(), next);
 }
 
 }  // namespace driftlab::ui

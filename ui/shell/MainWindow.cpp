@@ -4,7 +4,10 @@
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QHeaderView>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -17,6 +20,7 @@
 #include <QTreeView>
 
 #include "db/CampaignStore.h"
+#include "db/StoreBackend.h"
 #include "db/StoreOverview.h"
 #include "ui/models/CampaignTreeModel.h"
 #include "ui/models/EventLogModel.h"
@@ -28,14 +32,25 @@
 #include "ui/pages/RunPage.h"
 #include "ui/pages/SensorHealthPage.h"
 #include "ui/pages/SetupPage.h"
+#include "ui/shell/CampaignExportFlow.h"
+#include "ui/shell/CampaignImportFlow.h"
 #include "ui/shell/ReportExport.h"
 #include "ui/shell/Session.h"
+#include "ui/widgets/LabStoreDialog.h"
 
 namespace driftlab::ui {
 namespace {
 const QString kRecentKey = QStringLiteral("stores/recent");
 const QString kLastKey = QStringLiteral("stores/last");
 constexpr int kRecentCount = 8;
+
+/// A store as the window names it: a lab store's URL without its password
+/// (~/.pgpass holds that), a file as its path.
+QString shownStoreName(const QString& location) {
+    const auto server =
+        db::isServerStoreUrl(location) ? db::parseServerStoreUrl(location, nullptr) : std::nullopt;
+    return server ? server->display() : location;
+}
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -55,6 +70,11 @@ MainWindow::MainWindow(QWidget* parent)
     m_iso3 = new Iso230_3Page(*m_session, m_tabs);
     m_health = new SensorHealthPage(*m_session, m_tabs);
     m_report = new ReportExport(*m_session, this);
+    m_import = new CampaignImportFlow(*m_session, this);
+    m_export = new CampaignExportFlow(*m_session, this);
+    m_labStore =
+        new LabStoreDialog([this](const QString& url) { return openStore(url, false); }, this);
+    setAcceptDrops(true);
     m_tabs->addTab(m_setup, tr("Set-up"));
     m_tabs->addTab(m_run, tr("Run"));
     m_tabs->addTab(m_models, tr("Models"));
@@ -74,7 +94,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     connect(m_session, &Session::event, m_events, &EventLogModel::append);
     connect(m_session, &Session::storeChanged, this, [this](const QString& path) {
-        setWindowTitle(tr("DriftLab — %1").arg(path));
+        setWindowTitle(tr("DriftLab — %1").arg(shownStoreName(path)));
         refreshCampaignTree();
     });
     connect(m_session, &Session::storeContentChanged, this, &MainWindow::refreshCampaignTree);
@@ -133,8 +153,28 @@ void MainWindow::buildMenus() {
                                                           tr("DriftLab stores (*.sqlite)"));
         if (!path.isEmpty()) openStore(path, false);
     });
+    QAction* lab = file->addAction(tr("Open &lab store…"), this, [this] {
+        m_labStore->show();
+        m_labStore->raise();
+    });
+    lab->setObjectName(QStringLiteral("OpenLabStoreAction"));
     m_recent = file->addMenu(tr("Recent stores"));
     file->addSeparator();
+    QAction* import = file->addAction(tr("&Import campaign…"), QKeySequence(Qt::CTRL | Qt::Key_I),
+                                      this, &MainWindow::chooseCampaignToImport);
+    import->setObjectName(QStringLiteral("ImportCampaignAction"));
+    QAction* exportBundle =
+        file->addAction(tr("Export &campaign…"), this, &MainWindow::exportCampaign);
+    exportBundle->setObjectName(QStringLiteral("ExportCampaignAction"));
+    exportBundle->setEnabled(false);
+    connect(m_session, &Session::campaignSelected, exportBundle,
+            [exportBundle](std::optional<qint64> id) { exportBundle->setEnabled(id.has_value()); });
+    connect(m_export, &CampaignExportFlow::finished, this,
+            [this](bool written, const QString& message) {
+                statusBar()->showMessage(written ? tr("Campaign exported: %1").arg(message)
+                                                 : tr("Campaign not exported: %1").arg(message),
+                                         10'000);
+            });
     QAction* report = file->addAction(tr("&Export report…"), this, &MainWindow::exportReport);
     report->setObjectName(QStringLiteral("ExportReportAction"));
     report->setEnabled(false);
@@ -167,7 +207,7 @@ bool MainWindow::openStore(const QString& path, bool create, bool tellUser) {
         if (tellUser) QMessageBox::warning(this, tr("Store not opened"), error);
         return false;
     }
-    rememberStore(m_session->storePath());
+    rememberStore(shownStoreName(m_session->storePath()));
     return true;
 }
 
@@ -209,6 +249,48 @@ void MainWindow::exportReport() {
     const QString path =
         QFileDialog::getSaveFileName(this, tr("Export acceptance report"), {}, tr("PDF (*.pdf)"));
     if (!path.isEmpty()) m_report->start(path);
+}
+
+void MainWindow::chooseCampaignToImport() {
+    // One dialog for both forms of a bundle: its .zip, or the campaign.json
+    // that names its folder (a file dialog picks files or folders, not both).
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import campaign"), {},
+        tr("Campaign bundles (*.zip campaign.json);;Bundle archives (*.zip);;Bundle folders "
+           "(campaign.json)"));
+    if (path.isEmpty()) return;
+    const QFileInfo chosen(path);
+    importCampaign(chosen.fileName() == QLatin1String("campaign.json") ? chosen.absolutePath()
+                                                                       : path);
+}
+
+void MainWindow::importCampaign(const QString& path) {
+    QString why;
+    if (!m_import->start(path, &why)) {
+        m_events->append(QStringLiteral("error"), QStringLiteral("import"),
+                         tr("%1 not imported: %2").arg(path, why));
+        QMessageBox::warning(this, tr("Campaign not imported"), why);
+    }
+}
+
+void MainWindow::exportCampaign() {
+    const auto id = m_session->campaignId();
+    if (!id) return;
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export campaign as a bundle folder (new or empty)"),
+                                     QStringLiteral("campaign-%1").arg(*id));
+    if (!path.isEmpty()) m_export->start(path);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (CampaignImportFlow::bundleOf(event->mimeData())) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const auto path = CampaignImportFlow::bundleOf(event->mimeData());
+    if (!path) return;
+    event->acceptProposedAction();
+    importCampaign(*path);
 }
 
 void MainWindow::startDemo() {

@@ -2,7 +2,8 @@
 // The main window (docs/gui-setup.md): the campaign tree in a dock on the
 // left, the pages as tabs in the centre (Set-up, Run, Models, Diagnosis,
 // Compensation, ISO 230-2), the event log in a dock below, run control in a
-// tool bar and the run state in the status bar. Window layout, the last
+// tool bar and the run state in the status bar; a bundle folder or .zip
+// dropped on the window is imported (docs/gui-data.md). Window layout, the last
 // store and the recent stores persist with QSettings.
 
 #include <QMainWindow>
@@ -25,6 +26,9 @@ class Iso230_2Page;
 class Iso230_3Page;
 class SensorHealthPage;
 class ReportExport;
+class CampaignImportFlow;
+class CampaignExportFlow;
+class LabStoreDialog;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -46,6 +50,12 @@ public:
     SensorHealthPage* sensorHealthPage() const { return m_health; }
     /// File → Export report…: the acceptance report of the selected campaign.
     ReportExport* reportExport() const { return m_report; }
+    /// File → Import campaign… and bundles dropped on the window.
+    CampaignImportFlow* importFlow() const { return m_import; }
+    /// File → Export campaign…: the selected campaign as a bundle folder.
+    CampaignExportFlow* exportFlow() const { return m_export; }
+    /// File → Open lab store…: a postgresql:// store and its spool.
+    LabStoreDialog* labStoreDialog() const { return m_labStore; }
 
     /// Opens a store (creating it when `create`); errors go to the event log
     /// and, with `tellUser`, to a message box.
@@ -58,6 +68,8 @@ public slots:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void buildMenus();
@@ -65,6 +77,9 @@ private:
     void rememberStore(const QString& path);
     void updateRecentMenu();
     void exportReport();
+    void importCampaign(const QString& path);
+    void chooseCampaignToImport();
+    void exportCampaign();
 
     Session* m_session;
     CampaignTreeModel* m_tree;
@@ -81,6 +96,9 @@ private:
     Iso230_3Page* m_iso3;
     SensorHealthPage* m_health;
     ReportExport* m_report;
+    CampaignImportFlow* m_import;
+    CampaignExportFlow* m_export;
+    LabStoreDialog* m_labStore;
 };
 
 }  // namespace driftlab::ui

@@ -55,7 +55,10 @@ public:
     DeviceHealthModel* health() const { return m_health; }
     /// The temperature channels of the campaign being run (plotted together).
     QStringList temperatureColumns() const { return m_temperatureColumns; }
-    /// Wall time since the start, s.
+    /// The procedure's own clock, s: the run time reached in each of its
+    /// runs, summed. Simulated time on a sped-up simulated rig, pauses not
+    /// counted, and kept once the procedure has ended (what the status bar
+    /// shows after the run).
     double elapsed_s() const;
 
 signals:
@@ -80,11 +83,11 @@ private:
     engine::EngineProgress m_progress;
     int m_runShown = -1;
     QStringList m_temperatureColumns;
-    qint64 m_startedMs = 0;
 
     // Shared with the engine thread.
     mutable std::mutex m_mutex;
     engine::EngineProgress m_latest;                   // guarded
+    std::vector<double> m_runClock_s;                  // guarded, run time per run
     std::shared_ptr<live::LiveSampleBuffer> m_buffer;  // guarded
     std::shared_ptr<live::LiveReadings> m_readings;    // guarded
     std::optional<qint64> m_campaignId;                // guarded, set at the end

@@ -3,6 +3,7 @@
 #include <QFileInfo>
 
 #include "db/CampaignStore.h"
+#include "db/StoreBackend.h"
 
 namespace driftlab::ui {
 
@@ -11,13 +12,14 @@ Session::Session(QObject* parent) : QObject(parent) {
 }
 
 bool Session::openStore(const QString& path, bool create, QString* error) {
-    if (create && !QFileInfo::exists(path)) {
+    const bool server = db::isServerStoreUrl(path);
+    if (create && !server && !QFileInfo::exists(path)) {
         auto store = db::CampaignStore::open(path, db::StoreAccess::CreateIfMissing, error);
         if (!store || !store->publish(error)) return false;
     }
     // Checked read-only: a file that is not a DriftLab store is refused here.
     if (!db::CampaignStore::open(path, db::StoreAccess::ReadOnly, error)) return false;
-    m_storePath = QFileInfo(path).absoluteFilePath();
+    m_storePath = server ? path : QFileInfo(path).absoluteFilePath();
     m_campaignId.reset();
     emit storeChanged(m_storePath);
     emit campaignSelected(m_campaignId);

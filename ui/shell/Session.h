@@ -46,7 +46,8 @@ public:
     const RunSetup& runSetup() const { return m_runSetup; }
 
 public slots:
-    /// Opens (or, `create`, creates) a store; false with `error`.
+    /// Opens (or, `create`, creates) a store: a SQLite file or a lab store's
+    /// postgresql:// URL (never created here); false with `error`.
     bool openStore(const QString& path, bool create, QString* error);
     void selectCampaign(std::optional<qint64> id);
     /// Something was added to the store (a run, a fit, a table): views refresh.
