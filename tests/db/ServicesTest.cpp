@@ -70,7 +70,9 @@ TEST(BatchAnalysisService, runsTheAnalysesAskedForInOrderAndStopsWhenCancelled) 
     const db::BatchAnalysis all = db::analyseCampaign(servicesCampaign(), options);
     EXPECT_TRUE(all.ok()) << qPrintable(all.errors.join(QStringLiteral("; ")));
     EXPECT_EQ(started, (QStringList{db::kAnalysisIso230_2, db::kAnalysisFit}));
-    EXPECT_TRUE(all.json[QStringLiteral("iso230_2")].isObject());
+    // Two positioning runs: ISO 230-2 has no default run and says why.
+    EXPECT_TRUE(all.json[QStringLiteral("iso230_2")].isNull());
+    EXPECT_TRUE(all.json[QStringLiteral("skipped")][QStringLiteral("iso230_2")].isString());
     EXPECT_TRUE(all.json[QStringLiteral("fit")].isObject());
     EXPECT_TRUE(all.json[QStringLiteral("channels")].isArray());
     EXPECT_FALSE(all.json.contains(QStringLiteral("diagnosis")));

@@ -23,6 +23,7 @@
 #include "ui/pages/CompensationPage.h"
 #include "ui/pages/DiagnosisPage.h"
 #include "ui/pages/Iso230_2Page.h"
+#include "ui/pages/LiveCompensationPage.h"
 #include "ui/pages/ModelsPage.h"
 #include "ui/pages/RunPage.h"
 #include "ui/pages/SetupPage.h"
@@ -49,6 +50,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_models = new ModelsPage(*m_session, m_tabs);
     m_diagnosis = new DiagnosisPage(*m_session, m_tabs);
     m_compensation = new CompensationPage(*m_session, m_tabs);
+    m_live = new LiveCompensationPage(*m_session, m_tabs);
     m_iso = new Iso230_2Page(*m_session, m_tabs);
     m_report = new ReportExport(*m_session, this);
     m_tabs->addTab(m_setup, tr("Set-up"));
@@ -56,6 +58,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_tabs->addTab(m_models, tr("Models"));
     m_tabs->addTab(m_diagnosis, tr("Diagnosis"));
     m_tabs->addTab(m_compensation, tr("Compensation"));
+    m_tabs->addTab(m_live, tr("Live"));
     m_tabs->addTab(m_iso, tr("ISO 230-2"));
     setCentralWidget(m_tabs);
     buildDocks();

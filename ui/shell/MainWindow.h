@@ -21,6 +21,7 @@ class RunPage;
 class ModelsPage;
 class DiagnosisPage;
 class CompensationPage;
+class LiveCompensationPage;
 class Iso230_2Page;
 class ReportExport;
 
@@ -39,6 +40,7 @@ public:
     ModelsPage* modelsPage() const { return m_models; }
     DiagnosisPage* diagnosisPage() const { return m_diagnosis; }
     CompensationPage* compensationPage() const { return m_compensation; }
+    LiveCompensationPage* liveCompensationPage() const { return m_live; }
     Iso230_2Page* iso230_2Page() const { return m_iso; }
     /// File → Export report…: the acceptance report of the selected campaign.
     ReportExport* reportExport() const { return m_report; }
@@ -73,6 +75,7 @@ private:
     ModelsPage* m_models;
     DiagnosisPage* m_diagnosis;
     CompensationPage* m_compensation;
+    LiveCompensationPage* m_live;
     Iso230_2Page* m_iso;
     ReportExport* m_report;
 };
