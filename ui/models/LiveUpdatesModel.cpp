@@ -60,9 +60,11 @@ QVariant LiveUpdatesModel::data(const QModelIndex& index, int role) const {
         case Offset:
             return number(u.offset_um, 3);
         case Prediction:
-            return number(u.target_offset_um, 3);
-        case Uncertainty:
-            return number(m_uncertainty_um, 2);
+            // With its 95 % half-width, the same for every update of a run.
+            if (edit || !std::isfinite(m_uncertainty_um)) return number(u.target_offset_um, 3);
+            return QStringLiteral("%1 ± %2")
+                .arg(u.target_offset_um, 0, 'f', 3)
+                .arg(m_uncertainty_um, 0, 'f', 2);
         case HeldBack:
             return number(u.target_offset_um - u.offset_um, 3);
         case Note: {
@@ -86,11 +88,9 @@ QVariant LiveUpdatesModel::headerData(int section, Qt::Orientation orientation, 
         case Due:
             return tr("Due (s)");
         case Offset:
-            return tr("Offset sent (µm)");
+            return tr("Sent (µm)");
         case Prediction:
-            return tr("Model (µm)");
-        case Uncertainty:
-            return tr("± 95 % (µm)");
+            return tr("Model ± 95 % (µm)");
         case HeldBack:
             return tr("Held back (µm)");
         case Note:

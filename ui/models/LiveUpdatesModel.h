@@ -14,7 +14,7 @@ namespace driftlab::ui {
 class LiveUpdatesModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { Time, Due, Offset, Prediction, Uncertainty, HeldBack, Note, ColumnCount };
+    enum Column { Time, Due, Offset, Prediction, HeldBack, Note, ColumnCount };
 
     explicit LiveUpdatesModel(QObject* parent = nullptr);
 

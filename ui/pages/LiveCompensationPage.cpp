@@ -149,9 +149,9 @@ LiveCompensationPage::LiveCompensationPage(Session& session, QWidget* parent)
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(m_plot);
     split->addWidget(m_view);
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 2);
-    split->setSizes({600, 420});
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 1);
+    split->setSizes({520, 500});
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(settings);

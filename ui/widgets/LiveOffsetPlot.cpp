@@ -10,7 +10,7 @@ namespace {
 
 const QColor kSent(0x1f, 0x5f, 0xbf);
 const QColor kModel(0x30, 0x30, 0x30);
-const QColor kBand(0x70, 0x70, 0x70, 45);
+const QColor kBand(0x60, 0x80, 0xb0, 70);
 const QColor kCut(0xe0, 0x80, 0x00, 45);
 
 QCPGraph* addCurve(QCustomPlot& plot, const QString& name, const QVector<double>& x,
@@ -32,7 +32,7 @@ LiveOffsetPlot::LiveOffsetPlot(QWidget* parent) : QWidget(parent), m_plot(new QC
     m_plot->yAxis->setLabel(tr("Offset at the working position (µm)"));
     m_plot->legend->setVisible(true);
     m_plot->legend->setFont(QFont(font().family(), 8));
-    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignLeft);
+    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignHCenter);
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     setMinimumSize(320, 220);
 }
@@ -83,12 +83,12 @@ void LiveOffsetPlot::show(const std::vector<compensation::LiveUpdate>& updates,
         high << u.target_offset_um + uncertainty_um;
     }
     if (std::isfinite(uncertainty_um)) {
-        QCPGraph* lower = addCurve(*m_plot, tr("model ± 95 %"), t, low, QPen(kBand));
-        QCPGraph* upper = addCurve(*m_plot, QString(), t, high, QPen(kBand));
+        // The band's key is its upper edge, which carries the fill.
+        QCPGraph* lower = addCurve(*m_plot, QString(), t, low, QPen(kBand));
+        m_plot->legend->removeItem(m_plot->legend->itemCount() - 1);
+        QCPGraph* upper = addCurve(*m_plot, tr("model ± 95 %"), t, high, QPen(kBand));
         upper->setBrush(kBand);
         upper->setChannelFillGraph(lower);
-        m_plot->legend->removeItem(m_plot->legend->itemCount() - 1);
-        lower->setBrush(Qt::NoBrush);
     }
     addCurve(*m_plot, tr("model's correction"), t, model, QPen(kModel, 1.2, Qt::DashLine));
     QCPGraph* step = addCurve(*m_plot, tr("offset sent"), t, sent, QPen(kSent, 2));
