@@ -1,8 +1,9 @@
 // The Live page through its widgets, on stores made by the real CLI: a
 // replay sent to the simulated controller over real Modbus TCP follows
 // `driftlab-cli live --push` on the same store and run update for update,
-// and a model worse than no compensation is refused on the page (shown, with
-// nothing written to the controller) unless the override is ticked.
+// a model worse than no compensation is refused on the page (shown, with
+// nothing written to the controller) unless the override is ticked, and Stop
+// ends a paced replay with the controller holding what the table shows.
 #include <gtest/gtest.h>
 
 #include <QCheckBox>
@@ -77,9 +78,10 @@ std::unique_ptr<ui::MainWindow> liveWindowOn(const QString& store) {
     return window;
 }
 
-/// Replays `run` fitted on `train`, sent to `controller` (empty: a rehearsal).
-void replay(ui::LiveCompensationPage& page, const QString& run, const QStringList& train,
-            const QString& controller) {
+/// Sets the page up to replay `run` fitted on `train`, sent to `controller`
+/// (empty: a rehearsal), every 300 s of the run.
+void setUp(ui::LiveCompensationPage& page, const QString& run, const QStringList& train,
+           const QString& controller) {
     page.runBox()->setCurrentText(run);
     for (int i = 0; i < page.trainList()->count(); ++i) {
         QListWidgetItem* item = page.trainList()->item(i);
@@ -90,6 +92,12 @@ void replay(ui::LiveCompensationPage& page, const QString& run, const QStringLis
                                            : ui::LiveCompensationPage::ModbusRegisters;
     page.controllerBox()->setCurrentIndex(page.controllerBox()->findData(kind));
     page.urlEdit()->setText(controller);
+}
+
+/// Replays as setUp() says, to the end.
+void replay(ui::LiveCompensationPage& page, const QString& run, const QStringList& train,
+            const QString& controller) {
+    setUp(page, run, train, controller);
     QSignalSpy finished(&page, &ui::LiveCompensationPage::runFinished);
     QTest::mouseClick(page.startButton(), Qt::LeftButton);
     ASSERT_TRUE(finished.wait(300'000)) << page.statusLabel()->text().toStdString();
@@ -172,4 +180,33 @@ TEST(LiveCompensationPage, aModelWorseThanNoneIsRefusedForTheControllerUnlessOve
     EXPECT_TRUE(page.harmLabel()->text().contains(QStringLiteral("override")));
     EXPECT_GT(page.updatesModel()->rowCount(), 0);
     EXPECT_EQ(controller.registerValue(2000), page.updatesModel()->rowCount());
+}
+
+TEST(LiveCompensationPage, stopEndsTheReplayWithEveryShownUpdateSentAndNoMore) {
+    QTemporaryDir dir;
+    const QString store =
+        simulatedStore(dir, {QStringLiteral("--runs"), QStringLiteral("S1,S3")}, "stop.db");
+    sim::SimulatedController controller;
+    QString error;
+    ASSERT_TRUE(controller.start(&error)) << error.toStdString();
+    auto window = liveWindowOn(store);
+    ui::LiveCompensationPage& page = *window->liveCompensationPage();
+    setUp(page, QStringLiteral("S3"), {QStringLiteral("S1")}, controller.url());
+    page.speedupBox()->setValue(300);  // an update a second: time to press Stop
+    QSignalSpy shown(&page, &ui::LiveCompensationPage::updateShown);
+    QSignalSpy finished(&page, &ui::LiveCompensationPage::runFinished);
+    QTest::mouseClick(page.startButton(), Qt::LeftButton);
+    ASSERT_TRUE(shown.wait(120'000)) << page.statusLabel()->text().toStdString();
+    EXPECT_TRUE(page.isRunning());
+    EXPECT_TRUE(page.stopButton()->isEnabled());
+    QTest::mouseClick(page.stopButton(), Qt::LeftButton);
+    ASSERT_TRUE(finished.wait(60'000));
+    EXPECT_FALSE(page.isRunning());
+    EXPECT_TRUE(page.statusLabel()->text().startsWith(QStringLiteral("Stopped after")))
+        << page.statusLabel()->text().toStdString();
+    // Stopped before the end (36 updates), and the controller got what the table shows.
+    const int rows = page.updatesModel()->rowCount();
+    EXPECT_GT(rows, 0);
+    EXPECT_EQ(controller.registerValue(2000), rows);
+    EXPECT_TRUE(page.startButton()->isEnabled());
 }
