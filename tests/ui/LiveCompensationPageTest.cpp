@@ -6,6 +6,7 @@
 // ends a paced replay with the controller holding what the table shows.
 #include <gtest/gtest.h>
 
+#include <QAbstractItemModelTester>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -125,6 +126,9 @@ TEST(LiveCompensationPage, aReplaySentToTheControllerFollowsTheCliUpdateForUpdat
 
     auto window = liveWindowOn(store);
     ui::LiveCompensationPage& page = *window->liveCompensationPage();
+    // Rows appended one update at a time keep the model consistent for its views.
+    QAbstractItemModelTester tester(page.updatesModel(),
+                                    QAbstractItemModelTester::FailureReportingMode::Fatal);
     replay(page, QStringLiteral("S3"), {QStringLiteral("S1")}, pageController.url());
     EXPECT_FALSE(page.harmLabel()->isVisible());
     const std::vector<compensation::LiveUpdate>& updates = page.updatesModel()->updates();
