@@ -30,7 +30,7 @@ LiveOffsetPlot::LiveOffsetPlot(QWidget* parent) : QWidget(parent), m_plot(new QC
     layout->addWidget(m_plot);
     m_plot->xAxis->setLabel(tr("Time in the run (min)"));
     m_plot->yAxis->setLabel(tr("Offset at the working position (µm)"));
-    m_plot->legend->setVisible(true);
+    m_plot->legend->setVisible(false);  // an empty key until there is something to name
     m_plot->legend->setFont(QFont(font().family(), 8));
     m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignHCenter);
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
@@ -41,6 +41,7 @@ void LiveOffsetPlot::clear() {
     m_plot->clearGraphs();
     m_plot->clearItems();
     m_cuts.clear();
+    m_plot->legend->setVisible(false);
     m_plot->replot();
 }
 
@@ -94,6 +95,7 @@ void LiveOffsetPlot::show(const std::vector<compensation::LiveUpdate>& updates,
     QCPGraph* step = addCurve(*m_plot, tr("offset sent"), t, sent, QPen(kSent, 2));
     step->setLineStyle(QCPGraph::lsStepLeft);
     step->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 4));
+    m_plot->legend->setVisible(!updates.empty());
     m_plot->rescaleAxes();
     m_plot->yAxis->scaleRange(1.15, m_plot->yAxis->range().center());
     m_plot->replot();
