@@ -63,7 +63,7 @@ int batchCommand(const QStringList& args) {
     if (parser.isSet(QStringLiteral("keep-flagged")))
         options.itemArguments << QStringLiteral("--keep-flagged");
 
-    const FoundItems found = findBatchItems(parser.positionalArguments());
+    const FoundItems found = db::findBatchItems(parser.positionalArguments());
     for (const QString& note : found.notes) std::fprintf(stderr, "batch: %s\n", qPrintable(note));
     const std::size_t total = found.items.size();
     std::fprintf(stderr, "batch: %zu item%s, %d at a time\n", total, total == 1 ? "" : "s",

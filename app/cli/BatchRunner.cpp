@@ -154,8 +154,8 @@ void runBatch(const std::vector<BatchItem>& items, const BatchRunOptions& option
             ++running;
             child->clock.start();
             p->start(QCoreApplication::applicationFilePath(),
-                     QStringList{QStringLiteral("batch-item")} << options.itemArguments
-                                                               << items[child->index].source);
+                     QStringList{QStringLiteral("batch-item")}
+                         << options.itemArguments << batchItemSource(items[child->index]));
         }
     };
     startNext();

@@ -2,9 +2,9 @@
 #include <QFileInfo>
 #include <QJsonArray>
 
-#include "app/cli/AnalysisJson.h"
 #include "app/cli/CliCommon.h"
 #include "core/bundle/BundleWriter.h"
+#include "db/AnalysisJson.h"
 #include "db/CampaignImport.h"
 #include "db/CampaignStore.h"
 #include "db/StoreBackend.h"
@@ -104,7 +104,7 @@ int infoCommand(const QStringList& args) {
     parseArguments(parser, args, campaignSourceOptions(), campaignSourceArguments());
     const Campaign c = loadCampaignSource(parser);
 
-    const QJsonObject info = campaignInfoJson(c);
+    const QJsonObject info = db::campaignInfoJson(c);
     if (parser.isSet(QStringLiteral("json"))) {
         printJson(info);
         return 0;

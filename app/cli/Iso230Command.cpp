@@ -5,7 +5,6 @@
 #include <QJsonArray>
 #include <cmath>
 
-#include "app/cli/AnalysisJson.h"
 #include "app/cli/CliCommon.h"
 #include "app/cli/IsoOptions.h"
 #include "app/cli/StandardsOutput.h"
@@ -14,6 +13,7 @@
 #include "core/iso/AcceptanceJson.h"
 #include "core/iso/Iso230_2.h"
 #include "core/iso/PositioningAcceptance.h"
+#include "db/AnalysisJson.h"
 
 namespace driftlab::cli {
 namespace {
@@ -171,7 +171,7 @@ int iso230Command(const QStringList& args) {
     if (!result.ok()) throw CliError(source + QStringLiteral(": ") + result.error);
     printWarnings(result.warnings);
     if (parser.isSet(QStringLiteral("json"))) {
-        QJsonObject json = iso230EvaluationJson(result);
+        QJsonObject json = db::iso230EvaluationJson(result);
         json[QStringLiteral("source")] = source;
         if (acceptance) json[QStringLiteral("acceptance")] = iso::acceptanceJson(*acceptance);
         printJson(json);

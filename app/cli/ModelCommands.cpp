@@ -4,10 +4,10 @@
 
 #include "app/cli/CliCommon.h"
 #include "app/cli/FlaggedSamples.h"
-#include "app/cli/HeldOutFit.h"
 #include "core/models/ModelFactory.h"
 #include "core/models/ModelScore.h"
 #include "core/models/ModelledRuns.h"
+#include "db/HeldOutFit.h"
 
 namespace driftlab::cli {
 namespace {
@@ -49,11 +49,12 @@ int fitCommand(const QStringList& args) {
     const std::optional<QStringList> testRuns =
         parser.isSet(test) ? std::optional(runList(parser.value(test))) : std::nullopt;
     refuseOverlappingRuns(trainRuns.value_or(QStringList()), testRuns.value_or(QStringList()));
-    makeModelOrFail(parser.value(model));  // refused before the campaign is read
+    db::makeModelOrFail(parser.value(model));  // refused before the campaign is read
     Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
     leaveOutFlaggedSamples(parser, campaign);
-    const HeldOutFit r = fitHeldOut(campaign, parser.value(model), trainRuns, testRuns,
-                                    parser.value(kTargetOption), true);
+    const db::HeldOutFit r = db::fitHeldOut(
+        campaign,
+        {parser.value(model), trainRuns, testRuns, parser.value(kTargetOption), printProgress, {}});
     storeFitIfFromDatabase(parser, r.record);
 
     if (parser.isSet(QStringLiteral("json"))) {
@@ -106,7 +107,7 @@ int compareCommand(const QStringList& args) {
     leaveOutFlaggedSamples(parser, campaign);
     const QString target = parser.value(kTargetOption);
     const QStringList runs = models::modelledRuns(campaign, target);
-    const auto data = modelDataset(campaign, runs, target);
+    const auto data = db::modelDataset(campaign, runs, target);
     const QStringList names =
         parser.isSet(only) ? runList(parser.value(only)) : models::modelNamesFor(target);
 

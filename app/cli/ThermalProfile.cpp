@@ -5,8 +5,6 @@
 #include <cmath>
 
 #include "app/cli/CliCommon.h"
-#include "core/compensation/TemperatureCompensationLine.h"
-#include "core/models/AutoModel.h"
 #include "core/models/ModelFactory.h"
 
 namespace driftlab::cli {
@@ -35,11 +33,6 @@ const QCommandLineOption kForce{
     QStringLiteral("Use the model even when it does worse than no compensation on its own "
                    "cross-validation (refused without it: it would make the machine worse).")};
 
-/// Where the profile is evaluated: one point per millimetre at most, at least
-/// 64, then linear in between (the heat-transfer model simulates the whole run
-/// per call, so it is called once).
-constexpr int kProfilePoints = 257;
-
 }  // namespace
 
 QList<QCommandLineOption> thermalProfileOptions() {
@@ -53,10 +46,7 @@ const QCommandLineOption& forceOption() {
 void refuseHarm(const QCommandLineParser& parser, const models::Validation& validation,
                 const QString& what) {
     if (!validation.worseThanNone()) return;
-    const QString why = QStringLiteral(
-                            "%1 does worse than no compensation where it was not "
-                            "fitted (%2, %3): it would make the machine worse")
-                            .arg(what, validation.describe(), validation.folds);
+    const QString why = validation.harmReason(what);
     if (!parser.isSet(kForce)) throw CliError(why + QStringLiteral("; --force overrides"));
     printWarnings({why + QStringLiteral(" (used anyway: --force)")});
 }
@@ -77,81 +67,42 @@ ThermalProfile thermalProfile(const QCommandLineParser& parser, const Campaign& 
     if (!ok || !std::isfinite(time_s) || time_s < 0)
         throw CliError(
             QStringLiteral("--at: '%1' is not RUN@SECONDS (a run and a time in it)").arg(at), 2);
-    const QString stateRun = parts[0];
-    QStringList train = runList(parser.value(kTrain));
-    refuseOverlappingRuns(train, {stateRun});
-    if (train.isEmpty())
-        for (const Run& run : campaign.runs)
-            if (run.id != stateRun && isFeedAxisRun(run.kind) && !run.positioning.empty()) {
-                train << run.id;
-                break;
-            }
-    if (train.isEmpty()) throw CliError(QStringLiteral("--train: no run to fit the model on"), 2);
+    compensation::ThermalStateOptions options;
+    options.model = parser.value(kModel);
+    options.state_run = parts[0];
+    options.time_s = time_s;
+    options.train_runs = runList(parser.value(kTrain));
+    refuseOverlappingRuns(options.train_runs, {options.state_run});
+    if (options.train_runs.isEmpty())
+        if (const QString first = compensation::defaultTrainingRun(campaign, options.state_run);
+            !first.isEmpty())
+            options.train_runs << first;
+    if (options.train_runs.isEmpty())
+        throw CliError(QStringLiteral("--train: no run to fit the model on"), 2);
 
-    if (!models::makeModel(parser.value(kModel)))
+    if (!models::makeModel(options.model))
         throw CliError(QStringLiteral("--model: '%1' is not a model (%2)")
-                           .arg(parser.value(kModel), models::fitModelNames().join(", ")),
+                           .arg(options.model, models::fitModelNames().join(", ")),
                        2);
-    models::DatasetResult data = models::buildDataset(campaign, train + QStringList{stateRun});
-    if (!data.ok()) throw CliError(data.error);
-    const models::RunData state = data.runs.back();
-    data.runs.pop_back();
-    double end_s = 0;
-    for (const auto& o : state.observations) end_s = std::max(end_s, o.time_s);
-    if (!state.motion.empty()) end_s = std::max(end_s, state.motion.back().end_s);
-    if (time_s > end_s)
-        throw CliError(QStringLiteral("--at: run %1 ends at %2 s, before %3 s")
-                           .arg(stateRun)
-                           .arg(end_s)
-                           .arg(time_s),
-                       2);
-    const QString name = parser.value(kModel);
-    printProgress(QStringLiteral("fitting ") + name, 0);
-    models::ValidatedFit validated = models::fitValidated(name, data.runs);
-    printProgress(QStringLiteral("fitting ") + name, 1);
-    if (!validated.fit.success) throw CliError(validated.fit.message);
-    refuseHarm(parser, validated.validation, QStringLiteral("--model %1").arg(name));
-    if (const auto* chooser = dynamic_cast<const models::AutoModel*>(validated.model.get());
-        chooser && chooser->chosen() == QLatin1String("none"))
+    options.progress = printProgress;
+    compensation::ThermalStateFit fit;
+    try {
+        fit = compensation::fitThermalState(campaign, options);
+    } catch (const ServiceError& e) {
+        if (e.kind != ServiceError::Kind::BadRequest) throw;
+        throw CliError(QStringLiteral("--at: ") + e.message(), 2);  // the state's run is too short
+    }
+    refuseHarm(parser, fit.validation, QStringLiteral("--model %1").arg(options.model));
+    if (const QString none = fit.choseNone(); !none.isEmpty())
         throw CliError(QStringLiteral("--model auto: %1; the table would carry no thermal part: "
                                       "leave out --model and --at for the cold table")
-                           .arg(validated.fit.notes.front().section(QLatin1Char(':'), 0, 0)));
-    const models::ThermalErrorModel* model = validated.model.get();
-    std::vector<models::DataGap> gaps = models::gapsOf(data.runs);
-    gaps.insert(gaps.end(), state.gaps.begin(), state.gaps.end());
-    printWarnings(models::gapLines(gaps));
-
-    ThermalProfile profile;
-    profile.validation = validated.validation;
-    // The state's run beyond the training runs' rises is an extrapolation.
-    profile.uncertainty_um = [interval = validated.validation.interval,
-                              beyond = models::beyondTraining(data.runs, state)](double x) {
-        return interval.known() ? interval.halfWidthAt(x, beyond) : 0.0;
-    };
-    profile.from_mm = from_mm;
-    profile.to_mm = to_mm;
-    profile.fixed_end_mm = state.fixedEnd_mm();
-    std::vector<models::PredictionPoint> points;
-    for (int i = 0; i < kProfilePoints; ++i)
-        points.push_back({time_s, from_mm + (to_mm - from_mm) * i / (kProfilePoints - 1)});
-    const models::Prediction predicted = model->predict(state, points);
-    if (!predicted.ok()) throw CliError(QStringLiteral("--at %1: ").arg(at) + predicted.error);
-    std::vector<double> x_mm, e_um;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        x_mm.push_back(points[i].position_mm);
-        e_um.push_back(predicted.error_um[i]);
+                           .arg(none));
+    printWarnings(models::gapLines(fit.gaps));
+    try {
+        return compensation::thermalProfile(fit, from_mm, to_mm);
+    } catch (const ServiceError& e) {
+        throw CliError(QStringLiteral("--at %1: ").arg(at) + e.message());
     }
-    profile.error_um = [x_mm, e_um](double x) {
-        if (x <= x_mm.front()) return e_um.front();
-        if (x >= x_mm.back()) return e_um.back();
-        const auto hi = std::size_t(std::upper_bound(x_mm.begin(), x_mm.end(), x) - x_mm.begin());
-        const double f = (x - x_mm[hi - 1]) / (x_mm[hi] - x_mm[hi - 1]);
-        return e_um[hi - 1] + f * (e_um[hi] - e_um[hi - 1]);
-    };
-    profile.description = QStringLiteral("%1 fitted on %2, at %3 t = %4 s")
-                              .arg(model->name(), train.join(QLatin1Char(',')), stateRun)
-                              .arg(time_s);
-    return profile;
 }
 
 bool isTemperatureLineFormat(const QString& format) {
@@ -160,15 +111,9 @@ bool isTemperatureLineFormat(const QString& format) {
 
 int writeTemperatureLine(const QCommandLineParser& parser, const ThermalProfile& profile,
                          const QString& format, const QString& source) {
-    std::vector<double> x_mm, e_um;
-    for (int i = 0; i < kProfilePoints; ++i) {
-        x_mm.push_back(profile.from_mm +
-                       (profile.to_mm - profile.from_mm) * i / (kProfilePoints - 1));
-        e_um.push_back(profile.error_um(x_mm.back()));
-    }
     const double reference_mm =
         parser.isSet(kReference) ? numberOption(parser, kReference) : profile.fixed_end_mm;
-    const compensation::ErrorLine line = compensation::fitErrorLine(x_mm, e_um, reference_mm);
+    const compensation::ErrorLine line = compensation::thermalErrorLine(profile, reference_mm);
     const QString axis = parser.value(QStringLiteral("axis"));
     const compensation::ExportResult exported =
         format == QLatin1String("isg-temp")

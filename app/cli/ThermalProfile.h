@@ -1,26 +1,17 @@
 #pragma once
-// The thermal part of a compensation table: a model fitted on training runs,
-// evaluated at a stated state (a run and a time in it) over the axis. Shared
-// by `compensate` (table = cold error + this) and the straight-line
-// temperature compensation formats.
+// The options of the thermal part of a compensation table (--model, --train,
+// --at) for `compensate` and the straight-line temperature compensation
+// formats; the work is core/compensation/ThermalProfile's, shared with the GUI.
 
 #include <QCommandLineParser>
 
-#include "core/compensation/CompensationTable.h"
+#include "core/compensation/ThermalProfile.h"
 #include "core/domain/Campaign.h"
 #include "core/models/ModelValidation.h"
 
 namespace driftlab::cli {
 
-struct ThermalProfile {
-    compensation::ErrorProfile error_um;  ///< actual − target, µm, at a position
-    /// The 95 % half-width of the model's prediction interval, µm, at a position.
-    compensation::ErrorProfile uncertainty_um;
-    models::Validation validation;  ///< the model's cross-validation on its training runs
-    QString description;            ///< "heat-transfer fitted on S1, at S3 t = 3600 s"
-    double from_mm = 0, to_mm = 0;  ///< where it was evaluated
-    double fixed_end_mm = 0;        ///< the screw's fixed end (0 without a screw)
-};
+using compensation::ThermalProfile;
 
 /// --model, --train, --at, --force.
 QList<QCommandLineOption> thermalProfileOptions();

@@ -8,6 +8,7 @@
 
 #include "app/cli/CliCommon.h"
 #include "app/cli/CommandTable.h"
+#include "core/domain/ServiceError.h"
 
 namespace {
 
@@ -45,6 +46,11 @@ int runCommand(const Command& command, const QStringList& args) {
         if (e.exitCode != kExitOk)
             std::fprintf(stderr, "driftlab-cli %s: %s\n", qPrintable(command.name), e.what());
         return e.exitCode;
+    } catch (const driftlab::ServiceError& e) {
+        // A library's service: a bad request is a usage error, like CliError's exit 2.
+        endProgressLine();
+        std::fprintf(stderr, "driftlab-cli %s: %s\n", qPrintable(command.name), e.what());
+        return e.kind == driftlab::ServiceError::Kind::BadRequest ? kExitUsage : kExitFailure;
     }
 }
 

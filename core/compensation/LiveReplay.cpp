@@ -56,6 +56,10 @@ LiveReplayResult replayLive(const models::RunData& run,
         step.motion = in.motion;
         step.dt_s = in.dt_s;
         for (std::size_t k = 1; k < in.ambient_C.size(); ++k) {
+            if (options.cancelled && options.cancelled()) {
+                result.cancelled = true;
+                break;
+            }
             score(double(k - 1) * in.dt_s + 1e-9);
             step.ambient_begin_C = in.ambient_C[k - 1];
             step.ambient_end_C = in.ambient_C[k];

@@ -22,6 +22,8 @@ struct LiveReplayOptions {
     /// Called with every applied update (e.g. to write it to the controller);
     /// returning false cancels the replay.
     std::function<bool(const LiveUpdate&)> on_update;
+    /// Asked at every model step; true cancels the replay between updates.
+    std::function<bool()> cancelled;
 };
 
 struct LiveReplayResult {

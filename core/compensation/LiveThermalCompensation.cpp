@@ -87,7 +87,8 @@ LiveUpdate LiveThermalCompensation::makeUpdate(double due_s) {
     const double limit = m_settings.max_change_um;
     for (std::size_t i = 0; i < next.table_correction_um.size(); ++i)
         next.limited |= approach(next.table_correction_um[i], -error_um[i], limit);
-    next.limited |= approach(next.offset_um, -error_um.back(), limit);
+    next.target_offset_um = -error_um.back();
+    next.limited |= approach(next.offset_um, next.target_offset_um, limit);
     return next;
 }
 

@@ -36,6 +36,9 @@ struct LiveUpdate {
     double time_s = 0;     ///< model time at which it was applied
     double due_s = 0;      ///< when it fell due; time_s − due_s is the wait for a safe state
     double offset_um = 0;  ///< correction at offset_position_mm
+    /// The model's full correction at offset_position_mm, before the change
+    /// limit: what `offset_um` approaches while `limited`.
+    double target_offset_um = 0;
     std::vector<double> table_correction_um;  ///< per table position
     /// The model's full correction was held back by max_change_um; the rest
     /// follows with the next updates.

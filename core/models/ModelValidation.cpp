@@ -216,6 +216,14 @@ QString Validation::describe() const {
         .arg(none_rms_um, 0, 'g', 3);
 }
 
+QString Validation::harmReason(const QString& what) const {
+    if (!worseThanNone()) return {};
+    return QStringLiteral(
+               "%1 does worse than no compensation where it was not fitted (%2, %3): it would "
+               "make the machine worse")
+        .arg(what, describe(), folds);
+}
+
 Validation validationOf(const HeldOutPredictions& p, bool positionDependent,
                         std::size_t trainingRuns) {
     Validation v;

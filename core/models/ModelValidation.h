@@ -109,6 +109,10 @@ struct Validation {
     bool worseThanNone() const { return known() && rms_um > none_rms_um; }
     /// "cross-validated RMS 0.41 µm (no compensation 3.2 µm)".
     QString describe() const;
+    /// Empty, or why the model `what` names must not compensate a machine
+    /// (no harm): "… does worse than no compensation where it was not fitted
+    /// (…): it would make the machine worse".
+    QString harmReason(const QString& what) const;
 };
 
 /// The validation the held-out predictions give: RMS, no compensation's and

@@ -28,6 +28,7 @@
 #include "ui/pages/DiagnosisPage.h"
 #include "ui/pages/Iso230_2Page.h"
 #include "ui/pages/Iso230_3Page.h"
+#include "ui/pages/LiveCompensationPage.h"
 #include "ui/pages/ModelsPage.h"
 #include "ui/pages/RunPage.h"
 #include "ui/pages/SensorHealthPage.h"
@@ -66,6 +67,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_models = new ModelsPage(*m_session, m_tabs);
     m_diagnosis = new DiagnosisPage(*m_session, m_tabs);
     m_compensation = new CompensationPage(*m_session, m_tabs);
+    m_live = new LiveCompensationPage(*m_session, m_tabs);
     m_iso = new Iso230_2Page(*m_session, m_tabs);
     m_iso3 = new Iso230_3Page(*m_session, m_tabs);
     m_health = new SensorHealthPage(*m_session, m_tabs);
@@ -80,6 +82,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_tabs->addTab(m_models, tr("Models"));
     m_tabs->addTab(m_diagnosis, tr("Diagnosis"));
     m_tabs->addTab(m_compensation, tr("Compensation"));
+    m_tabs->addTab(m_live, tr("Live"));
     m_tabs->addTab(m_iso, tr("ISO 230-2"));
     m_tabs->addTab(m_iso3, tr("ISO 230-3"));
     m_tabs->addTab(m_health, tr("Sensor health"));

@@ -22,6 +22,7 @@ class RunPage;
 class ModelsPage;
 class DiagnosisPage;
 class CompensationPage;
+class LiveCompensationPage;
 class Iso230_2Page;
 class Iso230_3Page;
 class SensorHealthPage;
@@ -45,6 +46,7 @@ public:
     ModelsPage* modelsPage() const { return m_models; }
     DiagnosisPage* diagnosisPage() const { return m_diagnosis; }
     CompensationPage* compensationPage() const { return m_compensation; }
+    LiveCompensationPage* liveCompensationPage() const { return m_live; }
     Iso230_2Page* iso230_2Page() const { return m_iso; }
     Iso230_3Page* iso230_3Page() const { return m_iso3; }
     SensorHealthPage* sensorHealthPage() const { return m_health; }
@@ -92,6 +94,7 @@ private:
     ModelsPage* m_models;
     DiagnosisPage* m_diagnosis;
     CompensationPage* m_compensation;
+    LiveCompensationPage* m_live;
     Iso230_2Page* m_iso;
     Iso230_3Page* m_iso3;
     SensorHealthPage* m_health;

@@ -7,7 +7,7 @@
 #include "core/domain/Campaign.h"
 #include "core/iso/Iso230_2.h"
 
-namespace driftlab::cli {
+namespace driftlab::db {
 
 /// `info --json`: name, machine, axis, runs (id, kind, counts, duration), channels.
 QJsonObject campaignInfoJson(const Campaign& campaign);
@@ -16,4 +16,4 @@ QJsonObject campaignInfoJson(const Campaign& campaign);
 /// values (B, R, E, M, A, …) in µm, cycles, per-target detail, what was skipped.
 QJsonObject iso230EvaluationJson(const iso::Evaluation& evaluation);
 
-}  // namespace driftlab::cli
+}  // namespace driftlab::db

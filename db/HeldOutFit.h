@@ -1,26 +1,29 @@
 #pragma once
-// One model fitted on training runs and scored on held-out runs: what `fit`
-// prints and what `batch` reports for each campaign, from the same code.
+// One model fitted on training runs and scored on held-out runs: what
+// `driftlab-cli fit` prints, what `batch` reports for each campaign and what
+// the GUI can show, from the same code. Faults are ServiceErrors.
 
 #include <QJsonObject>
 #include <QStringList>
+#include <functional>
 #include <memory>
 #include <optional>
 
 #include "core/domain/Campaign.h"
+#include "core/domain/ServiceError.h"
 #include "core/models/ModelScore.h"
 #include "core/models/ModelValidation.h"
 #include "core/models/ThermalErrorModel.h"
 #include "core/models/TrainingEnvelope.h"
 #include "db/ModelFitStore.h"
 
-namespace driftlab::cli {
+namespace driftlab::db {
 
 /// The runs' data for a model (`target`: a drift channel, or empty for the
-/// positioning error); throws CliError naming what is missing.
+/// positioning error); throws ServiceError naming what is missing.
 std::vector<models::RunData> modelDataset(const Campaign& campaign, const QStringList& runs,
                                           const QString& target);
-/// The model called `name`; throws CliError (exit 2) naming the models there are.
+/// The model called `name`; throws ServiceError (BadRequest) naming the models there are.
 std::unique_ptr<models::ThermalErrorModel> makeModelOrFail(const QString& name);
 
 struct HeldOutFit {
@@ -42,7 +45,7 @@ struct HeldOutFit {
     std::vector<models::SpeedBeyondTraining> speedsBeyond;
     /// A held-out run goes beyond the training runs: its prediction extrapolates.
     bool extrapolates() const { return !beyondTraining.empty() || !speedsBeyond.empty(); }
-    db::ModelFitRecord record;  ///< as the store keeps it
+    ModelFitRecord record;  ///< as the store keeps it
 
     bool heldOut() const { return !testRuns.isEmpty(); }
     /// The runs the score is on: the test runs, or the training runs when none is held out.
@@ -57,13 +60,22 @@ struct HeldOutFit {
     QStringList trustLines() const;
 };
 
-/// Fits `modelName` on `train` and scores it on `test`. Without `train`: the
-/// first modelled run that is not a test run; without `test`: every other
-/// modelled run (docs/models.md). `target` is a drift channel, or empty
-/// for the positioning error. `progress` labels stderr progress, when given.
-/// Throws CliError (exit 2 for an unknown model, 1 when the fit fails).
-HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
-                      std::optional<QStringList> train, std::optional<QStringList> test,
-                      const QString& target, bool progress);
+struct HeldOutFitOptions {
+    QString model;
+    /// Without: the first modelled run that is not a test run.
+    std::optional<QStringList> train;
+    /// Without: every other modelled run (docs/models.md).
+    std::optional<QStringList> test;
+    QString target;  ///< a drift channel, or empty for the positioning error
+    /// Told `what` is being done ("fitting heat-transfer") at 0 and at 1.
+    std::function<void(const QString& what, double fraction)> progress;
+    /// Asked between the steps and inside the fit; true stops it (ServiceError).
+    std::function<bool()> cancelled;
+};
 
-}  // namespace driftlab::cli
+/// Fits the model on the training runs and scores it on the test runs.
+/// Throws ServiceError: BadRequest for an unknown model, Failed when the
+/// data or the fit fail or when cancelled.
+HeldOutFit fitHeldOut(const Campaign& campaign, const HeldOutFitOptions& options);
+
+}  // namespace driftlab::db

@@ -1,10 +1,10 @@
-#include "app/cli/AnalysisJson.h"
+#include "db/AnalysisJson.h"
 
 #include <QJsonArray>
 
-#include "app/cli/CliCommon.h"
+#include "db/ModelFitRecords.h"
 
-namespace driftlab::cli {
+namespace driftlab::db {
 namespace {
 
 QJsonObject targetJson(const iso::TargetResult& t) {
@@ -75,4 +75,4 @@ QJsonObject campaignInfoJson(const Campaign& c) {
             {QStringLiteral("channels"), channels}};
 }
 
-}  // namespace driftlab::cli
+}  // namespace driftlab::db

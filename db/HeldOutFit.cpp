@@ -1,35 +1,34 @@
-#include "app/cli/HeldOutFit.h"
+#include "db/HeldOutFit.h"
 
 #include <QJsonArray>
 
-#include "app/cli/CliCommon.h"
 #include "core/models/ModelFactory.h"
 #include "core/models/ModelledRuns.h"
 #include "db/ModelFitRecords.h"
 #include "db/ModelTrustJson.h"
 
-namespace driftlab::cli {
+namespace driftlab::db {
 std::vector<models::RunData> modelDataset(const Campaign& campaign, const QStringList& runs,
                                           const QString& target) {
     models::DatasetOptions options;
     options.target_channel = target;
     models::DatasetResult result = models::buildDataset(campaign, runs, options);
-    if (!result.ok()) throw CliError(result.error);
+    if (!result.ok()) throw ServiceError(result.error);
     return std::move(result.runs);
 }
 
 std::unique_ptr<models::ThermalErrorModel> makeModelOrFail(const QString& name) {
     auto model = models::makeModel(name);
     if (!model)
-        throw CliError(QStringLiteral("--model: '%1' is not a model (%2)")
-                           .arg(name, models::fitModelNames().join(", ")),
-                       2);
+        throw ServiceError(QStringLiteral("--model: '%1' is not a model (%2)")
+                               .arg(name, models::fitModelNames().join(", ")),
+                           ServiceError::Kind::BadRequest);
     return model;
 }
 
 QJsonObject HeldOutFit::json() const {
     const QJsonObject& metrics = record.metrics;
-    QJsonObject scored = db::scoreJson(score);
+    QJsonObject scored = scoreJson(score);
     scored[QStringLiteral("runs")] = QJsonArray::fromStringList(scoredRuns());
     QJsonArray beyond;
     for (const models::RiseBeyondTraining& b : beyondTraining)
@@ -46,9 +45,9 @@ QJsonObject HeldOutFit::json() const {
                                   {QStringLiteral("speed_rpm"), b.speed_rpm},
                                   {QStringLiteral("training_low_rpm"), b.training_low_rpm},
                                   {QStringLiteral("training_high_rpm"), b.training_high_rpm}});
-    QJsonObject tested = heldOut() ? db::scoreJson(score) : QJsonObject();
+    QJsonObject tested = heldOut() ? scoreJson(score) : QJsonObject();
     if (heldOut()) {
-        tested[QStringLiteral("coverage")] = db::coverageJson(coverage);
+        tested[QStringLiteral("coverage")] = coverageJson(coverage);
         tested[QStringLiteral("worse_than_none")] = heldOutWorseThanNone();
     }
     QJsonObject shownMetrics = metrics;
@@ -60,8 +59,8 @@ QJsonObject HeldOutFit::json() const {
             {QStringLiteral("score_kind"), metrics[QStringLiteral("score_kind")].toString()},
             {QStringLiteral("score"), scored},
             {QStringLiteral("test"), tested},
-            {QStringLiteral("validation"), db::validationJson(validation)},
-            {QStringLiteral("gaps"), db::gapsJson(gaps)},
+            {QStringLiteral("validation"), validationJson(validation)},
+            {QStringLiteral("gaps"), gapsJson(gaps)},
             {QStringLiteral("beyond_training"), beyond},
             {QStringLiteral("beyond_training_speed"), speeds},
             {QStringLiteral("fit"),
@@ -71,34 +70,39 @@ QJsonObject HeldOutFit::json() const {
                          {QStringLiteral("metrics"), shownMetrics}}}};
 }
 
-HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
-                      std::optional<QStringList> train, std::optional<QStringList> test,
-                      const QString& target, bool progress) {
+HeldOutFit fitHeldOut(const Campaign& campaign, const HeldOutFitOptions& options) {
+    const QString& target = options.target;
+    const auto checkCancelled = [&] {
+        if (options.cancelled && options.cancelled())
+            throw ServiceError(QStringLiteral("the fit was cancelled"));
+    };
     HeldOutFit r;
-    r.model = makeModelOrFail(modelName);  // an unknown name is refused before any work
-    r.trainRuns = train.value_or(QStringList());
-    r.testRuns = test.value_or(QStringList());
+    r.model = makeModelOrFail(options.model);  // an unknown name is refused before any work
+    r.trainRuns = options.train.value_or(QStringList());
+    r.testRuns = options.test.value_or(QStringList());
     const QStringList all = models::modelledRuns(campaign, target);
-    if (!train)
+    if (!options.train)
         for (const QString& id : all)
             if (!r.testRuns.contains(id)) {
                 r.trainRuns << id;
                 break;
             }
-    if (!test)
+    if (!options.test)
         for (const QString& id : all)
             if (!r.trainRuns.contains(id)) r.testRuns << id;
     if (r.trainRuns.isEmpty())
-        throw CliError(QStringLiteral("no run to fit on: ") +
-                       (all.isEmpty() ? models::whyNoModelledRun(campaign, target)
-                                      : QStringLiteral("--test holds out every modelled run")));
+        throw ServiceError(QStringLiteral("no run to fit on: ") +
+                           (all.isEmpty() ? models::whyNoModelledRun(campaign, target)
+                                          : QStringLiteral("--test holds out every modelled run")));
 
     const QString label = QStringLiteral("fitting ") + r.model->name();
-    if (progress) printProgress(label, 0);
+    if (options.progress) options.progress(label, 0);
     const std::vector<models::RunData> training = modelDataset(campaign, r.trainRuns, target);
-    models::ValidatedFit validated = models::fitValidated(modelName, training);
-    if (progress) printProgress(label, 1);
-    if (!validated.fit.success) throw CliError(validated.fit.message);
+    models::ValidatedFit validated =
+        models::fitValidated(options.model, training, options.cancelled);
+    checkCancelled();
+    if (options.progress) options.progress(label, 1);
+    if (!validated.fit.success) throw ServiceError(validated.fit.message);
     r.model = std::move(validated.model);
     r.fit = std::move(validated.fit);
     r.validation = validated.validation;
@@ -108,7 +112,7 @@ HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
     // where a script or the database expects a held-out score.
     const std::vector<models::RunData> scored = modelDataset(campaign, r.scoredRuns(), target);
     r.score = models::scoreModel(*r.model, scored);
-    if (!r.score.ok()) throw CliError(r.score.error);
+    if (!r.score.ok()) throw ServiceError(r.score.error);
     if (r.heldOut()) {
         r.beyondTraining = models::risesBeyondTraining(training, scored);
         r.speedsBeyond = models::speedsBeyondTraining(training, scored);
@@ -119,8 +123,8 @@ HeldOutFit fitHeldOut(const Campaign& campaign, const QString& modelName,
         const std::vector<models::DataGap> scoredGaps = models::gapsOf(scored);
         r.gaps.insert(r.gaps.end(), scoredGaps.begin(), scoredGaps.end());
     }
-    r.record = db::modelFitRecord(r.model->name(), target, r.trainRuns, r.testRuns, r.fit, r.score);
-    r.record.metrics[QStringLiteral("validation")] = db::validationJson(r.validation);
+    r.record = modelFitRecord(r.model->name(), target, r.trainRuns, r.testRuns, r.fit, r.score);
+    r.record.metrics[QStringLiteral("validation")] = validationJson(r.validation);
     return r;
 }
 
@@ -149,4 +153,4 @@ QStringList HeldOutFit::trustLines() const {
     return lines;
 }
 
-}  // namespace driftlab::cli
+}  // namespace driftlab::db
