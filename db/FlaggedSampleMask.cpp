@@ -1,5 +1,7 @@
 #include "db/FlaggedSampleMask.h"
 
+#include <QJsonArray>
+
 #include "db/SampleFlagStore.h"
 
 namespace driftlab::db {
@@ -16,6 +18,13 @@ QString MaskedSamples::describe() const {
         text += QStringLiteral(" and %1 more").arg(stretches.size() - kNamed);
     if (kept > 0) text += QStringLiteral("; %1 flagged stretch(es) kept").arg(kept);
     return text;
+}
+
+QJsonObject MaskedSamples::json() const {
+    return {{QStringLiteral("samples"), qint64(samples)},
+            {QStringLiteral("channels"), QJsonArray::fromStringList(channels)},
+            {QStringLiteral("stretches"), QJsonArray::fromStringList(stretches)},
+            {QStringLiteral("kept"), qint64(kept)}};
 }
 
 std::optional<MaskedSamples> leaveOutFlaggedSamples(CampaignStore& store, qint64 campaignId,

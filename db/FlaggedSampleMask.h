@@ -4,6 +4,7 @@
 // every model), except those of a stretch the user kept. Shared by the CLI
 // (unless --keep-flagged) and the GUI.
 
+#include <QJsonObject>
 #include <QStringList>
 #include <optional>
 
@@ -21,6 +22,9 @@ struct MaskedSamples {
     /// "N flagged samples of M channel(s) left out: (the first five stretches)
     /// [and X more]; K flagged stretch(es) kept".
     QString describe() const;
+    /// {"samples", "channels", "stretches", "kept"}: stored with a fit (its
+    /// metrics' "flagged_left_out") so the fit names what it did not see.
+    QJsonObject json() const;
 };
 
 /// Masks in `campaign` (campaign `campaignId` of `store`) the samples the store

@@ -13,14 +13,16 @@ QCommandLineOption keepFlaggedOption() {
                            "(default: left out).")};
 }
 
-void leaveOutFlaggedSamples(const QCommandLineParser& parser, Campaign& campaign) {
-    if (!parser.isSet(QStringLiteral("db")) || parser.isSet(QStringLiteral("keep-flagged"))) return;
+std::optional<db::MaskedSamples> leaveOutFlaggedSamples(const QCommandLineParser& parser,
+                                                        Campaign& campaign) {
+    if (!parser.isSet(QStringLiteral("db")) || parser.isSet(QStringLiteral("keep-flagged")))
+        return std::nullopt;
     auto store = openSourceStore(parser, db::StoreAccess::ReadOnly);
     QString error;
     const auto masked = db::leaveOutFlaggedSamples(
         *store, parser.value(QStringLiteral("campaign")).toLongLong(), campaign, &error);
     if (!masked) throw CliError(error);
-    if (!masked->flagged) return;
+    if (!masked->flagged) return std::nullopt;
     const std::size_t samples = masked->samples;
     const QStringList& channels = masked->channels;
     endProgressLine();
@@ -33,6 +35,7 @@ void leaveOutFlaggedSamples(const QCommandLineParser& parser, Campaign& campaign
                  "flags: %zu samples of %lld channel%s left out%s (--keep-flagged to use them)\n",
                  samples, static_cast<long long>(channels.size()), channels.size() == 1 ? "" : "s",
                  qPrintable(kept));
+    return masked;
 }
 
 }  // namespace driftlab::cli

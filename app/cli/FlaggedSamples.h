@@ -8,6 +8,7 @@
 #include <QCommandLineParser>
 
 #include "core/domain/Campaign.h"
+#include "db/FlaggedSampleMask.h"
 
 namespace driftlab::cli {
 
@@ -17,7 +18,9 @@ QCommandLineOption keepFlaggedOption();
 /// With --db and without --keep-flagged: masks the samples the store flagged
 /// for the campaign and says so on stderr ("flags: N samples of M channels
 /// left out (--keep-flagged to use them)"). Throws CliError when the flags
-/// cannot be read.
-void leaveOutFlaggedSamples(const QCommandLineParser& parser, Campaign& campaign);
+/// cannot be read. Returns what was left out, nullopt when nothing was flagged
+/// or the flags were kept.
+std::optional<db::MaskedSamples> leaveOutFlaggedSamples(const QCommandLineParser& parser,
+                                                        Campaign& campaign);
 
 }  // namespace driftlab::cli

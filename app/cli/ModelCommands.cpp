@@ -51,10 +51,11 @@ int fitCommand(const QStringList& args) {
     refuseOverlappingRuns(trainRuns.value_or(QStringList()), testRuns.value_or(QStringList()));
     db::makeModelOrFail(parser.value(model));  // refused before the campaign is read
     Campaign campaign = loadCampaignSource(parser, db::StoreAccess::ReadWrite);
-    leaveOutFlaggedSamples(parser, campaign);
-    const db::HeldOutFit r = db::fitHeldOut(
+    const std::optional<db::MaskedSamples> masked = leaveOutFlaggedSamples(parser, campaign);
+    db::HeldOutFit r = db::fitHeldOut(
         campaign,
         {parser.value(model), trainRuns, testRuns, parser.value(kTargetOption), printProgress, {}});
+    if (masked) r.record.metrics[QStringLiteral("flagged_left_out")] = masked->json();
     storeFitIfFromDatabase(parser, r.record);
 
     if (parser.isSet(QStringLiteral("json"))) {

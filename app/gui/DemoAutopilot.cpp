@@ -7,7 +7,9 @@
 #include <QTabWidget>
 #include <QTimer>
 
+#include "ui/models/LiveUpdatesModel.h"
 #include "ui/pages/DiagnosisPage.h"
+#include "ui/pages/LiveCompensationPage.h"
 #include "ui/pages/ModelsPage.h"
 #include "ui/pages/RunPage.h"
 #include "ui/pages/SetupPage.h"
@@ -70,6 +72,16 @@ void startDemoAutopilot(ui::MainWindow& window, double speedup, std::function<vo
              }
              w->diagnosisPage()->adoptButton()->click();
          }},
+        // Then a rehearsal of live compensation on the held-out run, so the
+        // Live page shows the offsets the model would send.
+        {[] { return true; }, [w] { w->pages()->setCurrentWidget(w->liveCompensationPage()); }},
+        {[w] { return w->liveCompensationPage()->startButton()->isEnabled(); },
+         [w] { w->liveCompensationPage()->start(); }},
+        {[w] {
+             const ui::LiveCompensationPage* live = w->liveCompensationPage();
+             return !live->isRunning() && live->updatesModel()->rowCount() > 0;
+         },
+         [] {}},
     });
     auto* timer = new QTimer(&window);
     auto next = std::make_shared<std::size_t>(0);

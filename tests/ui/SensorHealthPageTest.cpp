@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <QComboBox>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
@@ -64,7 +65,7 @@ protected:
     }
 
     /// The same fit as the Models page runs it (ui::runFit): the stored record's parameters.
-    QJsonObject guiFit(QString* note) {
+    QJsonObject guiFit(QString* note, QJsonObject* leftOut = nullptr) {
         ui::JobControl control;
         const ui::FitOutcome out = ui::runFit({db,
                                                1,
@@ -80,6 +81,8 @@ protected:
         EXPECT_TRUE(store) << qPrintable(error);
         const std::vector<db::ModelFitRecord> fits = db::modelFits(*store, 1);
         EXPECT_FALSE(fits.empty());
+        if (leftOut && !fits.empty())
+            *leftOut = fits.back().metrics[QStringLiteral("flagged_left_out")].toObject();
         return fits.empty() ? QJsonObject() : fits.back().parameters;
     }
 
@@ -118,8 +121,13 @@ TEST_F(SensorHealthPageTest, keepingAndMaskingAStretchChangesTheFitAsTheCliDoes)
     const QJsonObject masked = cliFit({}, &err);
     EXPECT_TRUE(err.contains("flags: 6 samples of 1 channel left out")) << err.constData();
     QString note;
-    EXPECT_EQ(guiFit(&note), masked);
+    QJsonObject leftOut;
+    EXPECT_EQ(guiFit(&note, &leftOut), masked);
     EXPECT_NE(masked, asLogged);
+    // The stored fit names what it did not see.
+    EXPECT_EQ(leftOut[QStringLiteral("samples")].toInt(), 6);
+    EXPECT_EQ(leftOut[QStringLiteral("channels")].toArray(),
+              QJsonArray{QStringLiteral("T_bearing_fixed")});
     EXPECT_TRUE(note.contains(QStringLiteral("6 flagged samples of 1 channel(s) left out")))
         << qPrintable(note);
     EXPECT_TRUE(note.contains(QStringLiteral("S1 T_bearing_fixed out_of_range")))
@@ -133,8 +141,10 @@ TEST_F(SensorHealthPageTest, keepingAndMaskingAStretchChangesTheFitAsTheCliDoes)
     EXPECT_TRUE(page.summaryLabel()->text().contains(QStringLiteral("0 samples left out")))
         << qPrintable(page.summaryLabel()->text());
     EXPECT_EQ(page.timeline()->keptBars(), 1);
-    EXPECT_EQ(guiFit(&note), asLogged);
+    EXPECT_EQ(guiFit(&note, &leftOut), asLogged);
     EXPECT_TRUE(note.contains(QStringLiteral("1 flagged stretch(es) kept"))) << qPrintable(note);
+    EXPECT_EQ(leftOut[QStringLiteral("samples")].toInt(), 0);
+    EXPECT_EQ(leftOut[QStringLiteral("kept")].toInt(), 1);
     EXPECT_EQ(cliFit({}, &err), asLogged);
     EXPECT_TRUE(err.contains("flags: 0 samples of 0 channels left out, 1 flagged stretch kept"))
         << err.constData();

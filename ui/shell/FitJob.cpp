@@ -8,14 +8,18 @@
 namespace driftlab::ui {
 
 std::optional<Campaign> loadCampaignForModels(const QString& storePath, qint64 campaignId,
-                                              QString* note, QString* error) {
+                                              QString* note, QString* error,
+                                              std::optional<db::MaskedSamples>* leftOut) {
     auto store = db::CampaignStore::open(storePath, db::StoreAccess::ReadOnly, error);
     if (!store) return std::nullopt;
     std::optional<Campaign> campaign = store->loadCampaign(campaignId, error);
     if (!campaign) return std::nullopt;
     const auto masked = db::leaveOutFlaggedSamples(*store, campaignId, *campaign, error);
     if (!masked) return std::nullopt;
-    if (masked->flagged) *note = masked->describe();
+    if (masked->flagged) {
+        *note = masked->describe();
+        if (leftOut) *leftOut = masked;
+    }
     return campaign;
 }
 
@@ -33,8 +37,8 @@ ModelledRunLists listModelledRuns(const QString& storePath, qint64 campaignId) {
 FitOutcome runFit(const FitRequest& request, JobControl& control) {
     FitOutcome out;
     control.progress(0.02);
-    auto campaign =
-        loadCampaignForModels(request.store_path, request.campaign_id, &out.note, &out.error);
+    auto campaign = loadCampaignForModels(request.store_path, request.campaign_id, &out.note,
+                                          &out.error, &out.masked);
     if (!campaign) return out;
     if (!models::makeModel(request.model)) {
         out.error = QObject::tr("'%1' is not a model (%2)")
@@ -102,11 +106,11 @@ FitOutcome runFit(const FitRequest& request, JobControl& control) {
     auto store =
         db::CampaignStore::open(request.store_path, db::StoreAccess::ReadWrite, &out.error);
     if (!store) return out;
-    out.fit_id = db::storeModelFit(
-        *store, request.campaign_id,
+    db::ModelFitRecord record =
         db::modelFitRecord(model->name(), request.target_channel, request.train_runs,
-                           request.test_runs, out.fit, out.pooled),
-        &out.error);
+                           request.test_runs, out.fit, out.pooled);
+    if (out.masked) record.metrics[QStringLiteral("flagged_left_out")] = out.masked->json();
+    out.fit_id = db::storeModelFit(*store, request.campaign_id, record, &out.error);
     control.progress(1);
     return out;
 }

@@ -15,14 +15,16 @@
 #include "core/models/ModelScore.h"
 #include "core/models/ModelValidation.h"
 #include "core/models/TrainingEnvelope.h"
+#include "db/FlaggedSampleMask.h"
 #include "ui/shell/BackgroundJob.h"
 
 namespace driftlab::ui {
 
 /// The campaign as stored, with its flagged samples left out (and `note`
-/// saying how many); nullopt with `error`.
+/// saying how many, `leftOut` what); nullopt with `error`.
 std::optional<Campaign> loadCampaignForModels(const QString& storePath, qint64 campaignId,
-                                              QString* note, QString* error);
+                                              QString* note, QString* error,
+                                              std::optional<db::MaskedSamples>* leftOut = nullptr);
 
 /// What the model workbench offers for a campaign: the targets ("" = the
 /// positioning error, then the drift channels) and the runs of each.
@@ -56,7 +58,8 @@ struct RunPrediction {
 struct FitOutcome {
     QString error;  ///< empty on success (and when cancelled)
     bool cancelled = false;
-    QString note;  ///< e.g. flagged samples left out
+    QString note;                             ///< e.g. flagged samples left out
+    std::optional<db::MaskedSamples> masked;  ///< the flagged samples left out, stored with the fit
     models::FitSummary fit;
     models::Score pooled;  ///< over every test run; with none, on the training runs
     bool held_out = false;
