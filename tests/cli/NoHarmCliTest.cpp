@@ -13,6 +13,7 @@
 #include "tests/cli/RealWorldBundleSupport.h"
 #include "tests/support/BundleTestSupport.h"
 #include "tests/support/CliRunner.h"
+#include "tests/support/PureNoise.h"
 
 using namespace driftlab::test;
 
@@ -25,23 +26,7 @@ const QString& noiseBundle() {
     static const QString path = [] {
         const QString bundle = dir.filePath(QStringLiteral("noise"));
         copyBundle(simulatedCampaign(QStringLiteral("S1,S2,S3,S4"), 5), bundle);
-        const char* script = R"(
-import csv, random, sys
-random.seed(3)
-path = sys.argv[1] + '/positioning.csv'
-rows = list(csv.reader(open(path, newline='')))
-head, rows = rows[0], rows[1:]
-c = {k: head.index(k) for k in ('run', 'cycle', 'target_mm', 'direction', 'deviation_um')}
-cold = {(r[c['run']], r[c['target_mm']], r[c['direction']]): r[c['deviation_um']]
-        for r in rows if int(r[c['cycle']]) == 0}
-for r in rows:
-    if int(r[c['cycle']]) > 0:
-        r[c['deviation_um']] = '%.4f' % (float(cold[(r[c['run']], r[c['target_mm']],
-                                                      r[c['direction']])]) + random.gauss(0, 1))
-csv.writer(open(path, 'w', newline='')).writerows([head] + rows)
-)";
-        runTool(QStringLiteral(DRIFTLAB_PYTHON),
-                {QStringLiteral("-c"), QString::fromUtf8(script), bundle});
+        replaceDriftByNoise(bundle);
         return bundle;
     }();
     return path;

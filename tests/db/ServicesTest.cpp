@@ -12,18 +12,13 @@
 #include "db/BatchAnalysis.h"
 #include "db/HeldOutFit.h"
 #include "tests/support/CliRunner.h"
+#include "tests/support/SimulatedCampaign.h"
 
 namespace driftlab::test {
 
 /// S1 and S3 of the simulated rig, read once per test binary.
 const Campaign& servicesCampaign() {
-    static const Campaign campaign = [] {
-        const bundle::BundleReadResult r =
-            bundle::readBundle(simulatedCampaign(QStringLiteral("S1,S3"), 5));
-        EXPECT_TRUE(r.ok()) << qPrintable(r.error ? r.error->toString() : QString());
-        return r.ok() ? *r.campaign : Campaign{};
-    }();
-    return campaign;
+    return readSimulatedCampaign(QStringLiteral("S1,S3"), 5);
 }
 
 TEST(HeldOutFitService, fitsOnTheFirstRunScoresTheOtherAndReportsProgress) {

@@ -20,6 +20,7 @@
 #include <QTest>
 
 #include "acquisition/sim/SimulatedController.h"
+#include "tests/support/PureNoise.h"
 #include "tests/ui/ModelsTestSupport.h"
 #include "ui/models/LiveUpdatesModel.h"
 #include "ui/pages/LiveCompensationPage.h"
@@ -43,23 +44,7 @@ QString noiseStore(const QTemporaryDir& dir) {
                       QStringLiteral("--seed"), QStringLiteral("5")})
                   .exitCode,
               0);
-    const char* script = R"(
-import csv, random, sys
-random.seed(3)
-path = sys.argv[1] + '/positioning.csv'
-rows = list(csv.reader(open(path, newline='')))
-head, rows = rows[0], rows[1:]
-c = {k: head.index(k) for k in ('run', 'cycle', 'target_mm', 'direction', 'deviation_um')}
-cold = {(r[c['run']], r[c['target_mm']], r[c['direction']]): r[c['deviation_um']]
-        for r in rows if int(r[c['cycle']]) == 0}
-for r in rows:
-    if int(r[c['cycle']]) > 0:
-        r[c['deviation_um']] = '%.4f' % (float(cold[(r[c['run']], r[c['target_mm']],
-                                                      r[c['direction']])]) + random.gauss(0, 1))
-csv.writer(open(path, 'w', newline='')).writerows([head] + rows)
-)";
-    runTool(QStringLiteral(DRIFTLAB_PYTHON),
-            {QStringLiteral("-c"), QString::fromUtf8(script), bundle});
+    replaceDriftByNoise(bundle);
     EXPECT_EQ(runCli({QStringLiteral("import"), bundle, QStringLiteral("--db"), store}).exitCode,
               0);
     return store;
