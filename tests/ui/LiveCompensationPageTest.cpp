@@ -136,7 +136,6 @@ TEST(LiveCompensationPage, aReplaySentToTheControllerFollowsTheCliUpdateForUpdat
     EXPECT_TRUE(page.statusLabel()->text().contains(
         QStringLiteral("%1 updates sent to %2").arg(expected.size()).arg(pageController.url())))
         << page.statusLabel()->text().toStdString();
-    saveScreenshot(*window, QStringLiteral("gui-live.png"));
 }
 
 TEST(LiveCompensationPage, aModelWorseThanNoneIsRefusedForTheControllerUnlessOverridden) {
