@@ -2,10 +2,13 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 
 #include "core/bundle/CsvTable.h"
+#include "core/domain/MessageText.h"
 
 namespace driftlab::interferometer {
 namespace {
@@ -14,10 +17,36 @@ QByteArray exact(double value) {
     return QByteArray::number(value, 'g', 17);  // round-trips through from_chars
 }
 
+/// The column of `role`: the mapped header exactly, or the layout's name as
+/// other software spells it; -1 when absent (or mapped to none).
+int columnOf(const bundle::CsvTable& table, const ColumnMapping& mapping, ReadingRole role) {
+    const std::optional<QString>& mapped = mapping[role];
+    if (!mapped)
+        return isRequired(role) ? table.requireColumn(layoutColumn(role))
+                                : table.column(layoutColumn(role));
+    const auto& header = table.header();
+    const auto it = std::find(header.begin(), header.end(), *mapped);
+    if (it != header.end()) return int(it - header.begin());
+    if (mapped->isEmpty() && !isRequired(role)) return -1;
+    throw bundle::BundleException(
+        {table.fileName(), 1, 0,
+         mapped->isEmpty() ? QStringLiteral("no column is chosen for %1, which a reading needs")
+                                 .arg(layoutColumn(role))
+                           : QStringLiteral("missing column %1 (chosen for %2) in header")
+                                 .arg(quotedText(*mapped), layoutColumn(role))});
+}
+
 }  // namespace
 
 InterferometerCsvImport importInterferometerCsv(const QString& path,
                                                 const InterferometerHeader& header,
+                                                double maxEnvironmentAge_s) {
+    return importInterferometerCsv(path, header, ColumnMapping{}, maxEnvironmentAge_s);
+}
+
+InterferometerCsvImport importInterferometerCsv(const QString& path,
+                                                const InterferometerHeader& header,
+                                                const ColumnMapping& mapping,
                                                 double maxEnvironmentAge_s) {
     InterferometerCsvImport result;
     const QString name = QFileInfo(path).fileName();
@@ -28,13 +57,16 @@ InterferometerCsvImport importInterferometerCsv(const QString& path,
     }
     try {
         bundle::CsvTable table(std::move(file), name);
-        const int time = table.requireColumn(QStringLiteral("time_s"));
-        const int position = table.requireColumn(QStringLiteral("position_mm"));
-        const int deviation = table.requireColumn(QStringLiteral("deviation_um"));
-        const int air = table.column(QStringLiteral("air_C"));
-        const int pressure = table.column(QStringLiteral("pressure_Pa"));
-        const int humidity = table.column(QStringLiteral("humidity_pct"));
-        const int material = table.column(QStringLiteral("material_C"));
+        std::array<int, kReadingRoles.size()> columns{};
+        for (ReadingRole role : kReadingRoles)
+            columns[std::size_t(role)] = columnOf(table, mapping, role);
+        const int time = columns[std::size_t(ReadingRole::Time)];
+        const int position = columns[std::size_t(ReadingRole::Position)];
+        const int deviation = columns[std::size_t(ReadingRole::Deviation)];
+        const int air = columns[std::size_t(ReadingRole::Air)];
+        const int pressure = columns[std::size_t(ReadingRole::Pressure)];
+        const int humidity = columns[std::size_t(ReadingRole::Humidity)];
+        const int material = columns[std::size_t(ReadingRole::Material)];
         const bool hasAir = air >= 0 && pressure >= 0 && humidity >= 0;
         if (!hasAir && (air >= 0 || pressure >= 0 || humidity >= 0))
             throw bundle::BundleException(
@@ -48,10 +80,12 @@ InterferometerCsvImport importInterferometerCsv(const QString& path,
                                 "the file has no air_C, pressure_Pa and "
                                 "humidity_pct columns to correct it with")});
 
-        // The parser's field names map back to this file's columns for errors.
-        const auto columnOf = [&](const QString& field) {
-            const int c = table.column(field);
-            return c >= 0 ? c : -1;
+        // The parser's field names (the layout's) map back to this file's
+        // columns for errors.
+        const auto fieldColumn = [&](const QString& field) {
+            for (ReadingRole role : kReadingRoles)
+                if (layoutColumn(role) == field) return columns[std::size_t(role)];
+            return -1;
         };
         InterferometerSession session(maxEnvironmentAge_s);
         session.feed(QStringLiteral("header,compensation=%1,reference=%2,wavelength_nm=%3")
@@ -89,7 +123,7 @@ InterferometerCsvImport importInterferometerCsv(const QString& path,
                     result.readings.push_back(std::move(*r));
                 }
             } catch (const InterferometerLineError& e) {
-                table.fail(columnOf(e.field()), e.message());
+                table.fail(fieldColumn(e.field()), e.message());
             }
         }
     } catch (const bundle::BundleException& e) {

@@ -9,8 +9,9 @@
 //   material_C                                  optional, carried only
 //
 // A column is also found capitalised and with its unit in brackets ("Air [°C]",
-// "Humidity [%]": core/bundle/ColumnSpelling.h). Vendor exports that name or
-// scale their columns otherwise: rename them to this layout. Whether the
+// "Humidity [%]": core/bundle/ColumnSpelling.h). A vendor export that names
+// its columns otherwise is read through a ColumnMapping (the user's choice of
+// column per quantity); one that scales them otherwise must be converted. Whether the
 // interferometer compensated itself is not in the file (no export states it
 // the same way): the caller says it, as in the stream's header. Rows go
 // through the stream's parser, so the same checks apply, and an error names
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "core/bundle/BundleError.h"
+#include "core/interferometer/InterferometerColumns.h"
 #include "core/interferometer/InterferometerSession.h"
 
 namespace driftlab::interferometer {
@@ -33,6 +35,11 @@ struct InterferometerCsvImport {
 
 InterferometerCsvImport importInterferometerCsv(const QString& path,
                                                 const InterferometerHeader& header,
+                                                double maxEnvironmentAge_s = 300.0);
+/// The same with the file's own column names mapped onto the layout's.
+InterferometerCsvImport importInterferometerCsv(const QString& path,
+                                                const InterferometerHeader& header,
+                                                const ColumnMapping& mapping,
                                                 double maxEnvironmentAge_s = 300.0);
 
 }  // namespace driftlab::interferometer

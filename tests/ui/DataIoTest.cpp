@@ -2,20 +2,30 @@
 // bundle imported as a folder, as a zip (made by the real zip tool) and by a
 // drop on the window; a bad bundle listed as file:line:column problems with
 // the store left byte for byte as it was; a campaign exported as a bundle
-// and imported again, equal to the original.
+// and imported again, equal to the original; an interferometer software's
+// CSV export mapped in its dialog and stored as a positioning run, and a bad
+// one listed by file:line:column with the store left as it was.
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
 #include <QCryptographicHash>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
+#include <QGroupBox>
+#include <QLineEdit>
 #include <QMimeData>
 #include <QSignalSpy>
+#include <QStandardItemModel>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUrl>
+#include <set>
 
 #include "db/CampaignStore.h"
+#include "tests/support/VendorInterferometerCsv.h"
 #include "tests/ui/UiTestSupport.h"
 #include "ui/models/ImportProblemsModel.h"
 #include "ui/shell/CampaignExportFlow.h"
@@ -23,6 +33,8 @@
 #include "ui/shell/MainWindow.h"
 #include "ui/shell/Session.h"
 #include "ui/widgets/ImportProblemsDialog.h"
+#include "ui/widgets/InterferometerCsvDialog.h"
+#include "ui/widgets/ScrewForm.h"
 
 using namespace driftlab;
 
@@ -226,6 +238,108 @@ TEST(DataIo, aBundleDroppedOnTheWindowIsImported) {
     refused.setAccepted(false);
     QCoreApplication::sendEvent(&f.window, &refused);
     EXPECT_FALSE(refused.isAccepted());
+}
+
+/// `text` written to `dir`/laser-export.csv, dropped on the window, mapped
+/// in its dialog (the preselection kept) and imported; the id when stored.
+std::optional<qint64> importVendorCsv(DataIoFixture& f, const QByteArray& text) {
+    const QString csv = f.dir.filePath(QStringLiteral("laser-export.csv"));
+    QFile file(csv);
+    EXPECT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(text);
+    file.close();
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(csv)});
+    QDragEnterEvent enter({10, 10}, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&f.window, &enter);
+    EXPECT_TRUE(enter.isAccepted());
+    QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&f.window, &drop);
+    ui::InterferometerCsvDialog* dialog = f.window.interferometerCsvDialog();
+    EXPECT_TRUE(dialog->isVisible());
+    dialog->machine->setText(QStringLiteral("VMC 1"));
+    dialog->screw->length_mm->setValue(600);
+    dialog->screw->diameter_mm->setValue(32);
+    dialog->screw->lead_mm->setValue(10);
+    dialog->screw->fixedEnd_mm->setValue(0);
+    dialog->screw->nutLength_mm->setValue(80);
+    EXPECT_EQ(dialog->validate(), QStringList{});
+    QSignalSpy finished(f.window.importFlow(), &ui::CampaignImportFlow::finished);
+    dialog->accept();
+    EXPECT_FALSE(dialog->isVisible());
+    EXPECT_TRUE(test::waitFor(finished));
+    if (finished.isEmpty()) return std::nullopt;
+    return finished.first().first().value<std::optional<qint64>>();
+}
+
+const std::vector<double> kLaserTargets{50, 150, 250, 350, 450};
+
+TEST(DataIo, anInterferometerCsvIsMappedInItsDialogAndStoredAsAPositioningRun) {
+    DataIoFixture f;
+    const QString csv = f.dir.filePath(QStringLiteral("laser-export.csv"));
+    QFile file(csv);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(test::vendorCsv(test::vendorReadings(kLaserTargets, 2)));
+    file.close();
+    ui::InterferometerCsvDialog* dialog = f.window.interferometerCsvDialog();
+    dialog->load(csv);
+    // The preview as the import reads the file; the vendor's names preselected.
+    EXPECT_EQ(dialog->previewError(), QString());
+    EXPECT_EQ(dialog->preview()->rowCount(), ui::InterferometerCsvDialog::kPreviewRows);
+    EXPECT_EQ(dialog->preview()->columnCount(), 4);
+    EXPECT_EQ(dialog->preview()->horizontalHeaderItem(2)->text(), QStringLiteral("Error [µm]"));
+    using interferometer::ReadingRole;
+    EXPECT_EQ(dialog->columnBox(ReadingRole::Time)->currentText(), QStringLiteral("Time [s]"));
+    EXPECT_EQ(dialog->columnBox(ReadingRole::Position)->currentText(),
+              QStringLiteral("Position (mm)"));
+    EXPECT_EQ(dialog->columnBox(ReadingRole::Deviation)->currentText(),
+              QStringLiteral("Error [µm]"));
+    EXPECT_EQ(dialog->columnBox(ReadingRole::Air)->currentIndex(), 0);  // none
+    EXPECT_TRUE(dialog->compensated->isChecked());
+
+    const auto id = importVendorCsv(f, test::vendorCsv(test::vendorReadings(kLaserTargets, 2)));
+    ASSERT_TRUE(id);
+    EXPECT_EQ(campaignsOf(f.store).size(), 1);
+    const Campaign stored = loadStored(f.store, *id);
+    EXPECT_EQ(stored.name, QStringLiteral("laser-export"));
+    EXPECT_EQ(stored.machine.name, QStringLiteral("VMC 1"));
+    ASSERT_EQ(stored.runs.size(), 1u);
+    const driftlab::Run& run = stored.runs.front();
+    EXPECT_EQ(run.kind, RunKind::Positioning);
+    ASSERT_EQ(run.positioning.size(), 20u);
+    std::set<double> targets;
+    int negative = 0;
+    for (const PositioningMeasurement& m : run.positioning) {
+        targets.insert(m.target_mm);
+        negative += m.direction == Direction::Negative;
+    }
+    EXPECT_EQ(targets, std::set<double>(kLaserTargets.begin(), kLaserTargets.end()));
+    EXPECT_EQ(negative, 10);
+    EXPECT_EQ(run.positioning.back().cycle, 2);
+}
+
+TEST(DataIo, aBadInterferometerCsvListsItsLineAndColumnAndStoresNothing) {
+    DataIoFixture f;
+    ASSERT_TRUE(f.import(kExample));
+    const QStringList before = campaignsOf(f.store);
+    const QByteArray hash = sha256Of(f.store);
+    // Line 6 of the export: the error column (3) holds no number.
+    QList<QByteArray> lines = test::vendorCsv(test::vendorReadings(kLaserTargets, 2)).split('\n');
+    QList<QByteArray> cells = lines[5].split(';');
+    cells[2] = "n/a";
+    lines[5] = cells.join(';');
+    EXPECT_FALSE(importVendorCsv(f, lines.join('\n')));
+    ui::ImportProblemsDialog* problems = f.window.importFlow()->problemsDialog();
+    ASSERT_TRUE(problems->isVisible());
+    ASSERT_GE(problems->model()->rowCount(), 1);
+    const ui::ImportProblem& first = problems->model()->problem(0);
+    EXPECT_EQ(first.level, QStringLiteral("error"));
+    EXPECT_EQ(first.file, QStringLiteral("laser-export.csv"));
+    EXPECT_EQ(first.line, 6);
+    EXPECT_EQ(first.column, 3);
+    EXPECT_TRUE(first.message.contains(QStringLiteral("n/a"))) << first.message.toStdString();
+    EXPECT_EQ(campaignsOf(f.store), before);
+    EXPECT_EQ(sha256Of(f.store), hash);
 }
 
 // The import dialog's error list, for docs/gui-data.md: run

@@ -3,8 +3,12 @@
 #include <QFileInfo>
 #include <QMimeData>
 #include <QProgressDialog>
+#include <QTemporaryDir>
 #include <QUrl>
 #include <memory>
+
+#include "core/bundle/BundleWriter.h"
+#include "core/interferometer/InterferometerCsvImport.h"
 
 #include "db/CampaignImport.h"
 #include "db/CampaignStore.h"
@@ -70,6 +74,37 @@ void importOnWorker(const QString& path, const QString& storePath, JobControl& c
     out.campaignId = result.campaignId;
 }
 
+/// The CSV read and built into a campaign, written as a bundle in a temporary
+/// folder (removed after), then stored as any bundle: every check of the
+/// bundle reader applies, and the problems list shows its errors.
+void importCsvOnWorker(const InterferometerCsvRequest& request, const QString& storePath,
+                       JobControl& control, ImportOutcome& out) {
+    const interferometer::InterferometerCsvImport read =
+        interferometer::importInterferometerCsv(request.path, request.header, request.mapping);
+    if (read.error) {
+        out.error = read.error->toString();
+        return;
+    }
+    const interferometer::PositioningRunBuild built =
+        interferometer::buildPositioningCampaign(read.readings, request.context);
+    if (built.error) {
+        out.error = built.error->toString();
+        return;
+    }
+    if (control.cancelled()) return;
+    const QTemporaryDir staging;
+    if (!staging.isValid()) {
+        out.error = QStringLiteral("cannot make a temporary folder: %1").arg(staging.errorString());
+        return;
+    }
+    const QString bundle = staging.filePath(QStringLiteral("bundle"));
+    if (const auto error = bundle::writeBundle(*built.campaign, bundle)) {
+        out.error = error->toString();
+        return;
+    }
+    importOnWorker(bundle, storePath, control, out);
+}
+
 }  // namespace
 
 CampaignImportFlow::CampaignImportFlow(Session& session, QWidget* dialogParent)
@@ -102,6 +137,22 @@ bool CampaignImportFlow::isRunning() const {
 }
 
 bool CampaignImportFlow::start(const QString& path, QString* why) {
+    return launch(path, why, [path](const QString& store, JobControl& control, ImportOutcome& out) {
+        importOnWorker(path, store, control, out);
+    });
+}
+
+bool CampaignImportFlow::startInterferometerCsv(const InterferometerCsvRequest& request,
+                                                QString* why) {
+    return launch(request.path, why,
+                  [request](const QString& store, JobControl& control, ImportOutcome& out) {
+                      importCsvOnWorker(request, store, control, out);
+                  });
+}
+
+bool CampaignImportFlow::launch(
+    const QString& path, QString* why,
+    std::function<void(const QString& store, JobControl&, ImportOutcome&)> work) {
     if (m_session.storePath().isEmpty()) {
         if (why) *why = tr("no store is open: open or create one, then import");
         return false;
@@ -115,8 +166,8 @@ bool CampaignImportFlow::start(const QString& path, QString* why) {
     m_progress->setValue(0);
     m_progress->show();
     auto outcome = std::make_shared<ImportOutcome>();
-    m_job->start([path, store,
-                  outcome](JobControl& control) { importOnWorker(path, store, control, *outcome); },
+    m_job->start([work = std::move(work), store,
+                  outcome](JobControl& control) { work(store, control, *outcome); },
                  [this, path, store, outcome] { report(path, store, *outcome); });
     return true;
 }
@@ -146,12 +197,17 @@ void CampaignImportFlow::report(const QString& path, const QString& store,
     emit finished(outcome.campaignId);
 }
 
+bool CampaignImportFlow::isInterferometerCsv(const QString& path) {
+    return path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive);
+}
+
 std::optional<QString> CampaignImportFlow::bundleOf(const QMimeData* mime) {
     if (!mime || !mime->hasUrls() || mime->urls().size() != 1) return std::nullopt;
     const QUrl url = mime->urls().front();
     if (!url.isLocalFile()) return std::nullopt;
     const QFileInfo info(url.toLocalFile());
-    if (info.isDir() || info.suffix().compare(QLatin1String("zip"), Qt::CaseInsensitive) == 0)
+    if (info.isDir() || info.suffix().compare(QLatin1String("zip"), Qt::CaseInsensitive) == 0 ||
+        isInterferometerCsv(info.fileName()))
         return info.absoluteFilePath();
     return std::nullopt;
 }

@@ -37,6 +37,7 @@
 #include "ui/shell/CampaignImportFlow.h"
 #include "ui/shell/ReportExport.h"
 #include "ui/shell/Session.h"
+#include "ui/widgets/InterferometerCsvDialog.h"
 #include "ui/widgets/LabStoreDialog.h"
 
 namespace driftlab::ui {
@@ -73,6 +74,15 @@ MainWindow::MainWindow(QWidget* parent)
     m_health = new SensorHealthPage(*m_session, m_tabs);
     m_report = new ReportExport(*m_session, this);
     m_import = new CampaignImportFlow(*m_session, this);
+    m_csvDialog = new InterferometerCsvDialog(this);
+    connect(m_csvDialog, &QDialog::accepted, this, [this] {
+        QString why;
+        if (!m_import->startInterferometerCsv(m_csvDialog->request(), &why)) {
+            m_events->append(QStringLiteral("error"), QStringLiteral("import"),
+                             tr("%1 not imported: %2").arg(m_csvDialog->request().path, why));
+            QMessageBox::warning(this, tr("Campaign not imported"), why);
+        }
+    });
     m_export = new CampaignExportFlow(*m_session, this);
     m_labStore =
         new LabStoreDialog([this](const QString& url) { return openStore(url, false); }, this);
@@ -256,11 +266,13 @@ void MainWindow::exportReport() {
 
 void MainWindow::chooseCampaignToImport() {
     // One dialog for both forms of a bundle: its .zip, or the campaign.json
-    // that names its folder (a file dialog picks files or folders, not both).
+    // that names its folder (a file dialog picks files or folders, not both);
+    // and for an interferometer's CSV export, mapped in its own dialog next.
     const QString path = QFileDialog::getOpenFileName(
         this, tr("Import campaign"), {},
-        tr("Campaign bundles (*.zip campaign.json);;Bundle archives (*.zip);;Bundle folders "
-           "(campaign.json)"));
+        tr("Campaign bundles and interferometer exports (*.zip campaign.json *.csv);;Bundle "
+           "archives (*.zip);;Bundle folders (campaign.json);;Interferometer CSV exports "
+           "(*.csv)"));
     if (path.isEmpty()) return;
     const QFileInfo chosen(path);
     importCampaign(chosen.fileName() == QLatin1String("campaign.json") ? chosen.absolutePath()
@@ -268,6 +280,13 @@ void MainWindow::chooseCampaignToImport() {
 }
 
 void MainWindow::importCampaign(const QString& path) {
+    if (CampaignImportFlow::isInterferometerCsv(path)) {
+        // Its columns are the vendor's: the user maps them first (window-modal,
+        // the window's event loop goes on).
+        m_csvDialog->load(path);
+        m_csvDialog->open();
+        return;
+    }
     QString why;
     if (!m_import->start(path, &why)) {
         m_events->append(QStringLiteral("error"), QStringLiteral("import"),

@@ -29,6 +29,7 @@ class SensorHealthPage;
 class ReportExport;
 class CampaignImportFlow;
 class CampaignExportFlow;
+class InterferometerCsvDialog;
 class LabStoreDialog;
 
 class MainWindow : public QMainWindow {
@@ -54,6 +55,8 @@ public:
     ReportExport* reportExport() const { return m_report; }
     /// File → Import campaign… and bundles dropped on the window.
     CampaignImportFlow* importFlow() const { return m_import; }
+    /// The column mapping of an interferometer CSV export being imported.
+    InterferometerCsvDialog* interferometerCsvDialog() const { return m_csvDialog; }
     /// File → Export campaign…: the selected campaign as a bundle folder.
     CampaignExportFlow* exportFlow() const { return m_export; }
     /// File → Open lab store…: a postgresql:// store and its spool.
@@ -100,6 +103,7 @@ private:
     SensorHealthPage* m_health;
     ReportExport* m_report;
     CampaignImportFlow* m_import;
+    InterferometerCsvDialog* m_csvDialog;
     CampaignExportFlow* m_export;
     LabStoreDialog* m_labStore;
 };
