@@ -23,7 +23,7 @@ models::CrossStateMatrix matrixOf(const QString& model, const std::vector<models
 
 void expectSensorlessWithinThreeTimesHeatTransfer(const QString& bundle) {
     const bundle::BundleReadResult read =
-        bundle::readBundle(QDir(QStringLiteral(DRIFTLAB_INDEPENDENT_SUITE)).filePath(bundle));
+        bundle::readBundle(QDir(QStringLiteral(DRIFTLAB_INDEPENDENT_QUICK)).filePath(bundle));
     ASSERT_TRUE(read.ok()) << qPrintable(read.error->toString());
     QStringList ids;
     for (const auto& r : read.campaign->runs) ids << r.id;
