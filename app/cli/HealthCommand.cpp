@@ -10,6 +10,7 @@
 
 #include "app/cli/CliCommon.h"
 #include "core/sensors/SampleFlags.h"
+#include "core/sensors/SensorHealth.h"
 #include "db/SampleFlagStore.h"
 
 namespace driftlab::cli {
@@ -18,11 +19,11 @@ namespace {
 std::vector<sensors::RedundantPair> redundantPairs(const QStringList& values) {
     std::vector<sensors::RedundantPair> pairs;
     for (const QString& value : values) {
-        const QStringList two = value.split(QLatin1Char('='));
-        if (two.size() != 2 || two[0].isEmpty() || two[1].isEmpty())
+        const auto pair = sensors::parseRedundantPair(value);
+        if (!pair)
             throw CliError(QStringLiteral("--redundant: '%1' is not two channels, A=B").arg(value),
                            2);
-        pairs.push_back({two[0], two[1]});
+        pairs.push_back(*pair);
     }
     return pairs;
 }

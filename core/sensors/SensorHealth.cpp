@@ -1,5 +1,6 @@
 #include "core/sensors/SensorHealth.h"
 
+#include <QStringList>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -132,6 +133,14 @@ std::map<QString, ChannelHealth> checkRun(const SampleSeries& series,
     }
     for (auto& [id, health] : result) health.summary = summarise(id, series.time_s, health.flags);
     return result;
+}
+
+std::optional<RedundantPair> parseRedundantPair(const QString& text) {
+    const QStringList two = text.split(QLatin1Char('='));
+    if (two.size() != 2) return std::nullopt;
+    RedundantPair pair{two[0].trimmed(), two[1].trimmed()};
+    if (pair.first.isEmpty() || pair.second.isEmpty()) return std::nullopt;
+    return pair;
 }
 
 }  // namespace driftlab::sensors

@@ -58,6 +58,10 @@ struct RedundantPair {
     QString second;
 };
 
+/// The pair written "A=B" (channel ids, spaces around them ignored); nullopt
+/// when `text` is not two non-empty ids joined by one '='.
+std::optional<RedundantPair> parseRedundantPair(const QString& text);
+
 /// Checks every declared channel present in the series, then every redundant
 /// pair on the samples that passed the single-channel checks; the pair flags
 /// are added to both channels. Keyed by channel id. Throws

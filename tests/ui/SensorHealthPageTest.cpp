@@ -10,8 +10,11 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QTableView>
+#include <algorithm>
+#include <map>
 
 #include "db/CampaignStore.h"
 #include "db/ModelFitStore.h"
@@ -157,6 +160,82 @@ TEST_F(SensorHealthPageTest, keepingAndMaskingAStretchChangesTheFitAsTheCliDoes)
     EXPECT_FALSE(cell(0, FlagModel::InFits).toBool());
     EXPECT_EQ(guiFit(&note), masked);
     EXPECT_EQ(cliFit(), masked);
+}
+
+TEST(SensorHealthRedundantPair, aPairDriftingApartIsFlaggedOnBothChannelsAsTheCliFindsIt) {
+    // T_bed rewritten in run S1 as a second ambient sensor in T_ambient's
+    // housing, 0.05 K apart, that decalibrates from 5000 s on (0.5 mK/s, up
+    // to 1 K): too slow for the single-channel checks, found only as a pair.
+    QTemporaryDir dir;
+    const QString bundle = dir.filePath(QStringLiteral("redundant"));
+    copyBundle(simulatedCampaign(QStringLiteral("S1,S3"), 3), bundle);
+    QList<QByteArray> lines = readFile(bundle + "/samples.csv").split('\n');
+    const QList<QByteArray> header = lines[0].split(',');
+    const int ambient = int(header.indexOf("T_ambient"));
+    const int bed = int(header.indexOf("T_bed"));
+    ASSERT_GT(ambient, 1);
+    ASSERT_GT(bed, 1);
+    for (QByteArray& line : lines) {
+        QList<QByteArray> f = line.split(',');
+        if (f.size() != header.size() || f[0] != "S1") continue;
+        const double drift_K = std::clamp((f[1].toDouble() - 5000.0) * 0.0005, 0.0, 1.0);
+        f[bed] = QByteArray::number(f[ambient].toDouble() + 0.05 + drift_K, 'f', 3);
+        line = f.join(',');
+    }
+    writeFile(bundle + "/samples.csv", lines.join('\n'));
+    const QString db = importedStore(dir, bundle);
+
+    ui::Session session;
+    ui::SensorHealthPage page{session};
+    QSignalSpy shown{&page, &ui::SensorHealthPage::flagsShown};
+    QString error;
+    ASSERT_TRUE(session.openStore(db, false, &error)) << qPrintable(error);
+    session.selectCampaign(1);
+    ASSERT_TRUE(waitFor(shown));
+    page.runBox()->setCurrentIndex(page.runBox()->findData(QStringLiteral("S1")));
+
+    // Without the pair nothing is found; a pair that is not two channels is named.
+    shown.clear();
+    page.checkButton()->click();
+    ASSERT_TRUE(waitFor(shown));
+    EXPECT_EQ(page.flagModel()->rowCount(), 0);
+    page.redundantPairs()->setText(QStringLiteral("T_ambient"));
+    page.checkButton()->click();
+    EXPECT_TRUE(page.messageLabel()->text().contains(QStringLiteral("A=B")))
+        << qPrintable(page.messageLabel()->text());
+    EXPECT_EQ(page.flagModel()->rowCount(), 0);
+
+    page.redundantPairs()->setText(QStringLiteral(" T_ambient = T_bed "));
+    shown.clear();
+    page.checkButton()->click();
+    ASSERT_TRUE(waitFor(shown));
+    const CliResult cli = runCli({QStringLiteral("health"), bundle, QStringLiteral("--run"),
+                                  QStringLiteral("S1"), QStringLiteral("--redundant"),
+                                  QStringLiteral("T_ambient=T_bed"), QStringLiteral("--json")});
+    ASSERT_EQ(cli.exitCode, 0) << cli.err.constData();
+    std::map<QString, std::pair<double, double>> found;
+    for (const QJsonValue& c : QJsonDocument::fromJson(cli.out)
+                                   .object()[QStringLiteral("runs")][0][QStringLiteral("channels")]
+                                   .toArray())
+        for (const QJsonValue& f : c[QStringLiteral("findings")].toArray()) {
+            EXPECT_EQ(f[QStringLiteral("kind")].toString(), QStringLiteral("redundant_drift"));
+            const QJsonArray range = f[QStringLiteral("ranges_s")][0].toArray();
+            found[c[QStringLiteral("id")].toString()] = {range[0].toDouble(), range[1].toDouble()};
+        }
+    ASSERT_EQ(found.size(), 2u) << cli.out.constData();
+    ASSERT_EQ(page.flagModel()->rowCount(), 2);
+    for (int row = 0; row < 2; ++row) {
+        const auto at = [&](int column, int role = Qt::UserRole) {
+            return page.flagModel()->data(page.flagModel()->index(row, column), role);
+        };
+        const QString channel = at(FlagModel::Channel, Qt::DisplayRole).toString();
+        ASSERT_TRUE(found.count(channel)) << qPrintable(channel);
+        EXPECT_EQ(at(FlagModel::Kind).toString(), QStringLiteral("redundant_drift"));
+        EXPECT_EQ(at(FlagModel::From).toDouble(), found[channel].first);
+        EXPECT_EQ(at(FlagModel::To).toDouble(), found[channel].second);
+        // The drift is past 0.5 K only after 6000 s.
+        EXPECT_GT(found[channel].first, 6000);
+    }
 }
 
 TEST(DriftHealthPages, fitTheSmallestSupportedWindow) {

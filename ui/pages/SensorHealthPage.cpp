@@ -5,6 +5,7 @@
 #include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSplitter>
 #include <QTableView>
@@ -22,6 +23,7 @@ SensorHealthPage::SensorHealthPage(Session& session, QWidget* parent)
     : QWidget(parent),
       m_session(session),
       m_run(new QComboBox(this)),
+      m_redundant(new QLineEdit(this)),
       m_check(new QPushButton(tr("Check run"), this)),
       m_keep(new QPushButton(tr("Keep in fits"), this)),
       m_leaveOut(new QPushButton(tr("Leave out of fits"), this)),
@@ -32,6 +34,12 @@ SensorHealthPage::SensorHealthPage(Session& session, QWidget* parent)
       m_timeline(new SensorFlagTimeline(this)),
       m_job(new BackgroundJob(this)) {
     m_run->setMinimumContentsLength(12);
+    m_redundant->setObjectName(QStringLiteral("RedundantPairs"));
+    m_redundant->setPlaceholderText(tr("A=B, C=D"));
+    m_redundant->setToolTip(
+        tr("Channels at the same place (two sensors in one housing), as id=id separated by "
+           "commas: Check run flags where a pair drifts apart (driftlab-cli health "
+           "--redundant)"));
     m_check->setToolTip(
         tr("Run the sensor self-diagnosis over the run's samples and store what "
            "it finds as its flags (driftlab-cli health --store)"));
@@ -52,6 +60,8 @@ SensorHealthPage::SensorHealthPage(Session& session, QWidget* parent)
     auto* bar = new QHBoxLayout;
     bar->addWidget(new QLabel(tr("Run"), this));
     bar->addWidget(m_run);
+    bar->addWidget(new QLabel(tr("Redundant pairs"), this));
+    bar->addWidget(m_redundant);
     bar->addWidget(m_check);
     bar->addSpacing(24);
     bar->addWidget(new QLabel(tr("Selected stretches:"), this));
@@ -175,11 +185,20 @@ void SensorHealthPage::showRun() {
 }
 
 void SensorHealthPage::checkRun() {
+    std::vector<sensors::RedundantPair> pairs;
+    for (const QString& text : m_redundant->text().split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const auto pair = sensors::parseRedundantPair(text);
+        if (!pair) {
+            showError(tr("Redundant pairs: '%1' is not two channels, A=B").arg(text.trimmed()));
+            return;
+        }
+        pairs.push_back(*pair);
+    }
     const QString runId = m_run->currentData().toString();
     const QString path = m_session.storePath();
     const qint64 id = m_campaignId;
     change(tr("checking run %1…").arg(runId),
-           [path, id, runId] { return checkRunFlags(path, id, runId); });
+           [path, id, runId, pairs] { return checkRunFlags(path, id, runId, pairs); });
 }
 
 void SensorHealthPage::keepSelected(bool kept) {

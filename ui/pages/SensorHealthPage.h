@@ -2,7 +2,8 @@
 // The sensor-health page (docs/sensor-health.md, "In the desktop
 // application"): each run's channels with their stored flags over time
 // (open/short, frozen, spikes, rate, redundancy), how many samples the models
-// leave out, "Check run" (the self-diagnosis of `driftlab-cli health --store`)
+// leave out, "Check run" (the self-diagnosis of `driftlab-cli health --store`,
+// with the redundant pairs the user names)
 // and keeping or masking again a flagged stretch before a fit. Every store
 // access runs on a worker.
 
@@ -16,6 +17,7 @@
 
 class QComboBox;
 class QLabel;
+class QLineEdit;
 class QPushButton;
 class QTableView;
 
@@ -34,6 +36,8 @@ public:
     ~SensorHealthPage() override;
 
     QComboBox* runBox() const { return m_run; }
+    /// Redundant pairs for Check run, "A=B, C=D".
+    QLineEdit* redundantPairs() const { return m_redundant; }
     QPushButton* checkButton() const { return m_check; }
     /// Keep: the selected stretches' samples go into the fits; Leave out: masked again.
     QPushButton* keepButton() const { return m_keep; }
@@ -61,6 +65,7 @@ private:
 
     Session& m_session;
     QComboBox* m_run;
+    QLineEdit* m_redundant;
     QPushButton* m_check;
     QPushButton* m_keep;
     QPushButton* m_leaveOut;

@@ -44,12 +44,13 @@ CampaignFlags loadCampaignFlags(const QString& storePath, qint64 campaignId,
     return out;
 }
 
-QString checkRunFlags(const QString& storePath, qint64 campaignId, const QString& runName) {
+QString checkRunFlags(const QString& storePath, qint64 campaignId, const QString& runName,
+                      const std::vector<sensors::RedundantPair>& redundant) {
     QString error;
     auto store = db::CampaignStore::open(storePath, db::StoreAccess::ReadWrite, &error);
     if (!store) return error;
     const auto runId = db::runDbId(*store, campaignId, runName, &error);
-    if (!runId || !db::flagRun(*store, *runId, {}, &error)) return error;
+    if (!runId || !db::flagRun(*store, *runId, {}, &error, redundant)) return error;
     return {};
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/domain/Campaign.h"
+#include "core/sensors/SensorHealth.h"
 #include "db/SampleFlagStore.h"
 
 namespace driftlab::ui {
@@ -32,8 +33,10 @@ struct CampaignFlags {
 CampaignFlags loadCampaignFlags(const QString& storePath, qint64 campaignId,
                                 const Campaign& campaign);
 
-/// Checks run `runName` and replaces its stored flags (db::flagRun); an error or "".
-QString checkRunFlags(const QString& storePath, qint64 campaignId, const QString& runName);
+/// Checks run `runName`, with the `redundant` pairs, and replaces its stored
+/// flags (db::flagRun); an error or "".
+QString checkRunFlags(const QString& storePath, qint64 campaignId, const QString& runName,
+                      const std::vector<sensors::RedundantPair>& redundant = {});
 
 /// Keeps (`kept`) or masks again the stored flags `flagIds`; an error or "".
 QString keepFlags(const QString& storePath, const std::vector<qint64>& flagIds, bool kept);
