@@ -342,7 +342,7 @@ TEST(DataIo, aBadInterferometerCsvListsItsLineAndColumnAndStoresNothing) {
     EXPECT_EQ(sha256Of(f.store), hash);
 }
 
-// The import dialog's error list, for docs/gui-data.md: run
+// The import dialog's error list and the CSV mapping, for docs/gui-data.md: run
 // under a real X server with DRIFTLAB_SCREENSHOT_DIR set,
 //   DRIFTLAB_SCREENSHOT_DIR=docs/images xvfb-run -a -s "-screen 0 1280x800x24"
 //     build/tests/ui/ui_dataio_tests --gtest_filter='Screenshots.*'
@@ -359,4 +359,21 @@ TEST(Screenshots, importErrors) {
     ui::ImportProblemsDialog* dialog = f.window.importFlow()->problemsDialog();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
     EXPECT_TRUE(dialog->grab().save(out + QStringLiteral("/gui-import.png")));
+}
+
+TEST(Screenshots, interferometerCsvMapping) {
+    const QString out = qEnvironmentVariable("DRIFTLAB_SCREENSHOT_DIR");
+    if (out.isEmpty()) GTEST_SKIP() << "set DRIFTLAB_SCREENSHOT_DIR to take the screenshot";
+    DataIoFixture f;
+    const QString csv = f.dir.filePath(QStringLiteral("laser-export.csv"));
+    QFile file(csv);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(test::vendorCsv(test::vendorReadings(kLaserTargets, 2)));
+    file.close();
+    ui::InterferometerCsvDialog* dialog = f.window.interferometerCsvDialog();
+    dialog->load(csv);
+    dialog->machine->setText(QStringLiteral("VMC 1"));
+    dialog->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
+    EXPECT_TRUE(dialog->grab().save(out + QStringLiteral("/gui-import-csv.png")));
 }

@@ -1,9 +1,9 @@
 // Screenshots of the Set-up page's channels in the demo state and of the
 // whole main window, for docs/images (gui-setup.png is the demo autopilot's,
 // with every other page). Run under a real X server:
-//   DRIFTLAB_SCREENSHOTS=docs/images xvfb-run -a -s "-screen 0 1280x800x24"
+//   DRIFTLAB_SCREENSHOT_DIR=docs/images xvfb-run -a -s "-screen 0 1280x800x24"
 //       env QT_QPA_PLATFORM=xcb build/tests/ui/ui_setup_tests --gtest_filter='*Screenshot*'
-// Skipped when DRIFTLAB_SCREENSHOTS is not set.
+// Skipped when DRIFTLAB_SCREENSHOT_DIR is not set.
 #include <gtest/gtest.h>
 
 #include <QDir>
@@ -21,8 +21,8 @@ namespace driftlab::ui {
 namespace {
 
 TEST(SetupScreenshot, demoSetupPageAndMainWindow) {
-    const QString out = qEnvironmentVariable("DRIFTLAB_SCREENSHOTS");
-    if (out.isEmpty()) GTEST_SKIP() << "DRIFTLAB_SCREENSHOTS not set";
+    const QString out = qEnvironmentVariable("DRIFTLAB_SCREENSHOT_DIR");
+    if (out.isEmpty()) GTEST_SKIP() << "DRIFTLAB_SCREENSHOT_DIR not set";
     MainWindow window;
     window.resize(1280, 800);
     window.show();
