@@ -240,14 +240,22 @@ TEST(DataIo, aBundleDroppedOnTheWindowIsImported) {
     EXPECT_FALSE(refused.isAccepted());
 }
 
-/// `text` written to `dir`/laser-export.csv, dropped on the window, mapped
-/// in its dialog (the preselection kept) and imported; the id when stored.
-std::optional<qint64> importVendorCsv(DataIoFixture& f, const QByteArray& text) {
+const std::vector<double> kLaserTargets{50, 150, 250, 350, 450};
+
+/// `text` (by default a vendor export of two cycles) as `dir`/laser-export.csv; its path.
+QString writeLaserExport(DataIoFixture& f, const QByteArray& text = test::vendorCsv(
+                                               test::vendorReadings(kLaserTargets, 2))) {
     const QString csv = f.dir.filePath(QStringLiteral("laser-export.csv"));
     QFile file(csv);
     EXPECT_TRUE(file.open(QIODevice::WriteOnly));
     file.write(text);
-    file.close();
+    return csv;
+}
+
+/// `text` written to `dir`/laser-export.csv, dropped on the window, mapped
+/// in its dialog (the preselection kept) and imported; the id when stored.
+std::optional<qint64> importVendorCsv(DataIoFixture& f, const QByteArray& text) {
+    const QString csv = writeLaserExport(f, text);
     QMimeData mime;
     mime.setUrls({QUrl::fromLocalFile(csv)});
     QDragEnterEvent enter({10, 10}, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
@@ -272,17 +280,10 @@ std::optional<qint64> importVendorCsv(DataIoFixture& f, const QByteArray& text) 
     return finished.first().first().value<std::optional<qint64>>();
 }
 
-const std::vector<double> kLaserTargets{50, 150, 250, 350, 450};
-
 TEST(DataIo, anInterferometerCsvIsMappedInItsDialogAndStoredAsAPositioningRun) {
     DataIoFixture f;
-    const QString csv = f.dir.filePath(QStringLiteral("laser-export.csv"));
-    QFile file(csv);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(test::vendorCsv(test::vendorReadings(kLaserTargets, 2)));
-    file.close();
     ui::InterferometerCsvDialog* dialog = f.window.interferometerCsvDialog();
-    dialog->load(csv);
+    dialog->load(writeLaserExport(f));
     // The preview as the import reads the file; the vendor's names preselected.
     EXPECT_EQ(dialog->previewError(), QString());
     EXPECT_EQ(dialog->preview()->rowCount(), ui::InterferometerCsvDialog::kPreviewRows);
@@ -365,13 +366,8 @@ TEST(Screenshots, interferometerCsvMapping) {
     const QString out = qEnvironmentVariable("DRIFTLAB_SCREENSHOT_DIR");
     if (out.isEmpty()) GTEST_SKIP() << "set DRIFTLAB_SCREENSHOT_DIR to take the screenshot";
     DataIoFixture f;
-    const QString csv = f.dir.filePath(QStringLiteral("laser-export.csv"));
-    QFile file(csv);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(test::vendorCsv(test::vendorReadings(kLaserTargets, 2)));
-    file.close();
     ui::InterferometerCsvDialog* dialog = f.window.interferometerCsvDialog();
-    dialog->load(csv);
+    dialog->load(writeLaserExport(f));
     dialog->machine->setText(QStringLiteral("VMC 1"));
     dialog->show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
