@@ -104,4 +104,13 @@ std::optional<qint64> adoptExtension(CampaignStore& store, qint64 campaignId,
     return fitId;
 }
 
+QStringList adoptedExtensionModels(CampaignStore& store, qint64 campaignId) {
+    const QString prefix = QStringLiteral("heat-transfer+");
+    QStringList models;
+    const std::vector<ModelFitRecord> fits = modelFits(store, campaignId);
+    for (auto fit = fits.rbegin(); fit != fits.rend(); ++fit)
+        if (fit->model.startsWith(prefix) && !models.contains(fit->model)) models << fit->model;
+    return models;
+}
+
 }  // namespace driftlab::db

@@ -36,4 +36,9 @@ std::optional<qint64> adoptExtension(CampaignStore& store, qint64 campaignId,
                                      const diagnosis::Finding& finding,
                                      std::optional<qint64> diagnosisId, QString* error);
 
+/// The models of the extensions adopted in campaign `campaignId`
+/// ("heat-transfer+motor_heat"), newest first, each once: what live
+/// compensation can step besides heat-transfer.
+QStringList adoptedExtensionModels(CampaignStore& store, qint64 campaignId);
+
 }  // namespace driftlab::db

@@ -7,13 +7,14 @@
 #include <memory>
 
 #include "acquisition/live/LiveOffsetWriter.h"
+#include "core/diagnosis/ExtendedHeatTransferModel.h"
 #include "core/models/HeatTransferModel.h"
 #include "core/models/ThermalErrorData.h"
 
 namespace driftlab::live {
 namespace {
 
-const QString kModel = QStringLiteral("heat-transfer");
+const QString kBaseModel = QStringLiteral("heat-transfer");
 
 bool isCancelled(const LiveCompensationOptions& options) {
     return options.cancelled && options.cancelled();
@@ -28,11 +29,21 @@ void paceTo(double t_s, const LiveCompensationOptions& options, const QElapsedTi
         QThread::msleep(quint64(std::min<qint64>(due_ms - wall.elapsed(), 50)));
 }
 
+/// heat-transfer (no `causes`) or its extension by `causes`, fitted and
+/// cross-validated on `runs`.
+models::ValidatedFit fitModel(const QStringList& causes, const std::vector<models::RunData>& runs,
+                              const std::function<bool()>& cancelled) {
+    if (causes.isEmpty()) return models::fitValidated(kBaseModel, runs, cancelled);
+    return models::fitValidated(
+        [causes] { return std::make_unique<diagnosis::ExtendedHeatTransferModel>(causes); }, runs,
+        cancelled);
+}
+
 }  // namespace
 
 QString LivePlan::model() const {
-    return QStringLiteral("the heat-transfer model fitted on %1")
-        .arg(train_runs.join(QLatin1Char(',')));
+    return QStringLiteral("the %1 model fitted on %2")
+        .arg(model_name, train_runs.join(QLatin1Char(',')));
 }
 
 LivePlan planLive(const Campaign& campaign, const LiveCompensationOptions& options) {
@@ -48,9 +59,20 @@ LivePlan planLive(const Campaign& campaign, const LiveCompensationOptions& optio
         throw ServiceError(
             QStringLiteral("the live table has %1 points, not 2 to 1024").arg(options.table_points),
             Kind::BadRequest);
+    QStringList causes;
+    if (options.model != kBaseModel) {
+        QString why;
+        causes = diagnosis::ExtendedHeatTransferModel::causesOf(options.model, &why);
+        if (causes.isEmpty())
+            throw ServiceError(
+                QStringLiteral("live compensation steps heat-transfer or an extension of it: %1")
+                    .arg(why),
+                Kind::BadRequest);
+    }
     LivePlan plan;
     plan.run = options.run;
     plan.train_runs = options.train_runs;
+    plan.model_name = options.model;
     plan.settings.update_interval_s = options.update_interval_s;
     plan.settings.max_change_um = options.max_change_um;
     QString why;
@@ -61,9 +83,9 @@ LivePlan planLive(const Campaign& campaign, const LiveCompensationOptions& optio
     if (!data.ok()) throw ServiceError(data.error);
     plan.replayed = data.runs.back();
     data.runs.pop_back();
-    const QString label = QStringLiteral("fitting ") + kModel;
+    const QString label = QStringLiteral("fitting ") + options.model;
     if (options.progress) options.progress(label, 0);
-    const models::ValidatedFit fitted = models::fitValidated(kModel, data.runs, options.cancelled);
+    const models::ValidatedFit fitted = fitModel(causes, data.runs, options.cancelled);
     if (isCancelled(options)) throw ServiceError(QStringLiteral("the fit was cancelled"));
     if (options.progress) options.progress(label, 1);
     if (!fitted.fit.success) throw ServiceError(fitted.fit.message);
@@ -74,6 +96,10 @@ LivePlan planLive(const Campaign& campaign, const LiveCompensationOptions& optio
     const auto screw = model.fittedScrew(plan.replayed, &why);
     if (!screw) throw ServiceError(why);
     plan.screw = *screw;
+    if (const auto& inputs = model.variant().inputs)
+        plan.online_inputs = [inputs, values = model.values()](models::ScrewRunInputs& in) {
+            inputs(values.data(), in);
+        };
 
     // The table spans the run's measured targets, where its score can be checked.
     double lo = INFINITY, hi = -INFINITY;
@@ -116,6 +142,7 @@ LiveRunResult runLive(const LivePlan& plan, const LiveCompensationOptions& optio
     compensation::LiveReplayOptions replay;
     replay.settings = plan.settings;
     replay.cancelled = options.cancelled;
+    replay.online_inputs = plan.online_inputs;
     replay.state_at = [&](double t_s) {
         paceTo(t_s, options, wall);
         MachineState state = compensation::stateFromMotion(plan.replayed.motion, t_s);

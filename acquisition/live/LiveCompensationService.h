@@ -1,10 +1,11 @@
 #pragma once
 // Live thermal compensation as a service (docs/live-compensation.md): the
-// heat-transfer model fitted on training runs, a stored run replayed as live
-// data through it, and each update it applies (only between cuts, limited
-// per update) reported and, with a controller, written to its live-offset
-// registers (LiveOffsetWriter). `driftlab-cli live` and the GUI's Live
-// compensation page call the same two steps: planLive, then runLive.
+// heat-transfer model, or an adopted extension of it, fitted on training
+// runs, a stored run replayed as live data through it, and each update it
+// applies (only between cuts, limited per update) reported and, with a
+// controller, written to its live-offset registers (LiveOffsetWriter).
+// `driftlab-cli live` and the GUI's Live compensation page call the same two
+// steps: planLive, then runLive.
 // Faults are ServiceErrors naming where and why.
 
 #include <QStringList>
@@ -33,7 +34,10 @@ struct CuttingWindow {
 
 struct LiveCompensationOptions {
     QString run;             ///< the run replayed as live data
-    QStringList train_runs;  ///< the heat-transfer model's training runs (not `run`)
+    QStringList train_runs;  ///< the model's training runs (not `run`)
+    /// "heat-transfer", or an adopted extension of it ("heat-transfer+motor_heat")
+    /// whose causes act on the screw's heat flow.
+    QString model = QStringLiteral("heat-transfer");
     double update_interval_s = 60;
     double max_change_um = 5;  ///< largest change of any value per update
     int table_points = 128;    ///< 2…1024, over the run's measured targets
@@ -62,23 +66,27 @@ struct LiveCompensationOptions {
 struct LivePlan {
     QString run;
     QStringList train_runs;
+    QString model_name;                 ///< as in the options
     models::Validation validation;      ///< the model's cross-validation on its training runs
     std::vector<models::DataGap> gaps;  ///< of the training and replayed runs
     models::RunData replayed;
     physics::ScrewThermalParameters screw;
+    /// What an extension does to the logged inputs online (empty for most).
+    std::function<void(models::ScrewRunInputs&)> online_inputs;
     compensation::LiveSettings settings;
     /// The 95 % half-width of the prediction at the offset position (NaN: not known).
     double uncertainty_um = 0;
 
-    /// "the heat-transfer model fitted on S1,S2".
+    /// "the heat-transfer+motor_heat model fitted on S1,S2".
     QString model() const;
     /// Empty, or why the model must not be sent to a machine (no harm).
     QString harmReason() const { return validation.harmReason(model()); }
 };
 
-/// Fits the heat-transfer model on the training runs and sets up the replay
-/// of the run. Throws ServiceError: BadRequest for runs that overlap or
-/// settings out of range, Failed when the data or the fit fail or cancelled.
+/// Fits the model on the training runs and sets up the replay of the run.
+/// Throws ServiceError: BadRequest for runs that overlap, a model that is
+/// not heat-transfer or an extension of it, or settings out of range;
+/// Failed when the data or the fit fail or are cancelled.
 LivePlan planLive(const Campaign& campaign, const LiveCompensationOptions& options);
 
 struct LiveRunResult {

@@ -109,10 +109,12 @@ const std::vector<Command>& commands() {
          QStringLiteral("Serve the simulated controller of DriftLab's Modbus register map until "
                         "Ctrl-C (for trying the push and the map).")},
         {QStringLiteral("live"), liveCommand,
-         QStringLiteral("live BUNDLE --run R --train R,.. [--interval-s S] [--cutting FROM-TO,..]"),
+         QStringLiteral("live BUNDLE --run R --train R,.. [--model M] [--interval-s S] "
+                        "[--cutting FROM-TO,..]"),
          QStringLiteral("Live thermal compensation replayed on a measured run: the heat-transfer "
-                        "model fitted on the training runs updates the correction online, only "
-                        "between cuts, and is scored on the run's measured thermal error.")},
+                        "model (or an adopted extension) fitted on the training runs updates the "
+                        "correction online, only between cuts, and is scored on the run's "
+                        "measured thermal error.")},
         {QStringLiteral("health"), healthCommand,
          QStringLiteral("health BUNDLE [--run R,..] [--redundant A=B]... [--store]"),
          QStringLiteral("Sensor self-diagnosis of the logged samples: out of range (open, short), "

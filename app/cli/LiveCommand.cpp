@@ -1,5 +1,6 @@
 // live: live thermal compensation (docs/live-compensation.md) replayed on a measured run.
-// The heat-transfer model is fitted on the training runs; the replayed run's
+// The heat-transfer model, or an adopted extension of it (--model), is
+// fitted on the training runs; the replayed run's
 // ambient, torque and motion then drive it online, step by step, and every
 // update it applies (only between cuts, limited per update) is printed and,
 // with --push, written to the controller's live-offset registers. The
@@ -55,8 +56,14 @@ int liveCommand(const QStringList& args) {
                                        QStringLiteral("R")};
     const QCommandLineOption train{
         QStringLiteral("train"),
-        QStringLiteral("Runs the heat-transfer model is fitted on (not the replayed run)."),
+        QStringLiteral("Runs the model is fitted on (not the replayed run)."),
         QStringLiteral("R,..")};
+    const QCommandLineOption model{
+        QStringLiteral("model"),
+        QStringLiteral("heat-transfer (default), or an extension a diagnosis adopted, "
+                       "heat-transfer+CAUSE, for causes on the screw's heat flow (motor_heat, "
+                       "forced_convection, nut_heat_exponent)."),
+        QStringLiteral("NAME"), QStringLiteral("heat-transfer")};
     const QCommandLineOption interval{QStringLiteral("interval-s"),
                                       QStringLiteral("Update interval (default 60)."),
                                       QStringLiteral("S"), QStringLiteral("60")};
@@ -93,13 +100,14 @@ int liveCommand(const QStringList& args) {
                        "possible)."),
         QStringLiteral("N")};
     parseArguments(parser, args,
-                   campaignSourceOptions() << runOption << train << interval << position << points
-                                           << maxChange << cutting << push << staleAfter << speedup
-                                           << keepFlaggedOption() << forceOption(),
+                   campaignSourceOptions() << runOption << train << model << interval << position
+                                           << points << maxChange << cutting << push << staleAfter
+                                           << speedup << keepFlaggedOption() << forceOption(),
                    campaignSourceArguments({runOption, train}));
     live::LiveCompensationOptions options;
     options.run = parser.value(runOption);
     options.train_runs = runList(parser.value(train));
+    options.model = parser.value(model);
     const QString& runId = options.run;
     const QStringList& trainRuns = options.train_runs;
     refuseOverlappingRuns(trainRuns, {runId});
@@ -178,6 +186,7 @@ int liveCommand(const QStringList& args) {
         for (const LiveUpdate& u : result.updates) updates.append(updateJson(u, uncertainty_um));
         printJson({{QStringLiteral("run"), runId},
                    {QStringLiteral("train_runs"), QJsonArray::fromStringList(trainRuns)},
+                   {QStringLiteral("model"), plan.model_name},
                    {QStringLiteral("interval_s"), plan.settings.update_interval_s},
                    {QStringLiteral("offset_position_mm"), offsetPosition_mm},
                    {QStringLiteral("updates"), updates},

@@ -72,10 +72,14 @@ void startDemoAutopilot(ui::MainWindow& window, double speedup, std::function<vo
              }
              w->diagnosisPage()->adoptButton()->click();
          }},
-        // Then a rehearsal of live compensation on the held-out run, so the
-        // Live page shows the offsets the model would send.
+        // Then a rehearsal of live compensation on the held-out run with the
+        // adopted extension, so the Live page shows the offsets it would send.
         {[] { return true; }, [w] { w->pages()->setCurrentWidget(w->liveCompensationPage()); }},
-        {[w] { return w->liveCompensationPage()->startButton()->isEnabled(); },
+        {[w] {
+             const ui::LiveCompensationPage* live = w->liveCompensationPage();
+             return live->startButton()->isEnabled() &&
+                    live->modelBox()->currentText().endsWith(ui::SetupPage::demoHiddenCause());
+         },
          [w] { w->liveCompensationPage()->start(); }},
         {[w] {
              const ui::LiveCompensationPage* live = w->liveCompensationPage();

@@ -5,7 +5,6 @@
 
 #include "core/domain/HeldLinear.h"
 #include "core/models/ModelError.h"
-#include "core/models/ScrewRunSimulation.h"
 
 namespace driftlab::compensation {
 namespace {
@@ -31,8 +30,9 @@ LiveReplayResult replayLive(const models::RunData& run,
                             LiveReplayOptions options) {
     LiveReplayResult result;
     try {
-        const models::ScrewRunInputs in =
+        models::ScrewRunInputs in =
             models::prepareScrewRun(run, options.dt_s, QStringLiteral("live compensation"));
+        if (options.online_inputs) options.online_inputs(in);
         LiveThermalCompensation live(parameters, in.initial_C, options.settings);
         std::vector<models::ErrorObservation> readings = run.observations;
         std::sort(readings.begin(), readings.end(),

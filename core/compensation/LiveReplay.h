@@ -9,6 +9,7 @@
 #include <functional>
 
 #include "core/compensation/LiveThermalCompensation.h"
+#include "core/models/ScrewRunSimulation.h"
 #include "core/models/ThermalErrorData.h"
 
 namespace driftlab::compensation {
@@ -24,6 +25,10 @@ struct LiveReplayOptions {
     std::function<bool(const LiveUpdate&)> on_update;
     /// Asked at every model step; true cancels the replay between updates.
     std::function<bool()> cancelled;
+    /// What an extended model does to the logged inputs before it steps
+    /// (the motor's heat reaching the screw late). It must be causal, each
+    /// step from earlier samples only, as it would be on live data.
+    std::function<void(models::ScrewRunInputs&)> online_inputs;
 };
 
 struct LiveReplayResult {

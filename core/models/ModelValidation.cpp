@@ -158,12 +158,18 @@ double HeldOutPredictions::standard_error_um() const {
 HeldOutPredictions crossValidatedPredictions(const QString& family,
                                              const std::vector<ValidationFold>& folds,
                                              const std::function<bool()>& cancelled) {
+    if (!makeModel(family)) throw ModelError(QStringLiteral("'%1' is not a model").arg(family));
+    return crossValidatedPredictions([family] { return makeModel(family); }, folds, cancelled);
+}
+
+HeldOutPredictions crossValidatedPredictions(const ModelMaker& make,
+                                             const std::vector<ValidationFold>& folds,
+                                             const std::function<bool()>& cancelled) {
     HeldOutPredictions out;
     for (const ValidationFold& fold : folds) {
+        const std::unique_ptr<ThermalErrorModel> model = make();
         if (cancelled && cancelled())
-            throw ModelError(QStringLiteral("model '%1': fit cancelled").arg(family));
-        const std::unique_ptr<ThermalErrorModel> model = makeModel(family);
-        if (!model) throw ModelError(QStringLiteral("'%1' is not a model").arg(family));
+            throw ModelError(QStringLiteral("model '%1': fit cancelled").arg(model->name()));
         if (cancelled) model->setCancelCheck(cancelled);
         const FitSummary fit = model->fit(fold.fit_on);
         if (!fit.success) throw ModelError(fit.message);
@@ -289,12 +295,18 @@ Coverage coverageOf(const ThermalErrorModel& model, const PredictionInterval& in
 
 ValidatedFit fitValidated(const QString& name, const std::vector<RunData>& training,
                           const std::function<bool()>& cancelled) {
-    ValidatedFit r;
-    r.model = makeModel(name);
-    if (!r.model) {
+    if (!makeModel(name)) {
+        ValidatedFit r;
         r.fit.message = QStringLiteral("'%1' is not a model").arg(name);
         return r;
     }
+    return fitValidated([name] { return makeModel(name); }, training, cancelled);
+}
+
+ValidatedFit fitValidated(const ModelMaker& make, const std::vector<RunData>& training,
+                          const std::function<bool()>& cancelled) {
+    ValidatedFit r;
+    r.model = make();
     if (cancelled) r.model->setCancelCheck(cancelled);
     r.fit = r.model->fit(training);
     if (!r.fit.success) return r;
@@ -316,7 +328,7 @@ ValidatedFit fitValidated(const QString& name, const std::vector<RunData>& train
     } else {
         try {
             r.validation =
-                validationOf(crossValidatedPredictions(name, validationFolds(training), cancelled),
+                validationOf(crossValidatedPredictions(make, validationFolds(training), cancelled),
                              training.front().positionDependent(), training.size());
         } catch (const ModelError& e) {
             if (cancelled && cancelled()) {

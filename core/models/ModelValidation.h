@@ -62,10 +62,17 @@ struct HeldOutPredictions {
     double standard_error_um() const;
 };
 
+/// Makes a new, unfitted model: one per fold of a cross-validation.
+using ModelMaker = std::function<std::unique_ptr<ThermalErrorModel>()>;
+
 /// `family` refitted on each fold and predicted on its held-out parts;
 /// throws ModelError with the family's reason when it cannot be, or when
 /// `cancelled` says so.
 HeldOutPredictions crossValidatedPredictions(const QString& family,
+                                             const std::vector<ValidationFold>& folds,
+                                             const std::function<bool()>& cancelled = {});
+/// The same for a model no name makes (an adopted extension of heat-transfer).
+HeldOutPredictions crossValidatedPredictions(const ModelMaker& make,
                                              const std::vector<ValidationFold>& folds,
                                              const std::function<bool()>& cancelled = {});
 
@@ -155,6 +162,9 @@ struct ValidatedFit {
 /// success and message say whether it worked; a validation that cannot be
 /// formed (a fold the family cannot fit) is left unknown with a note.
 ValidatedFit fitValidated(const QString& name, const std::vector<RunData>& training,
+                          const std::function<bool()>& cancelled = {});
+/// The same for a model no name makes; `make` is called once per fold too.
+ValidatedFit fitValidated(const ModelMaker& make, const std::vector<RunData>& training,
                           const std::function<bool()>& cancelled = {});
 
 /// What a fit's user must know of its validation, as notes: the interval and

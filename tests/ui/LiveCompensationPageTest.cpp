@@ -1,7 +1,9 @@
 // The Live page through its widgets, on stores made by the real CLI: a
 // replay sent to the simulated controller over real Modbus TCP follows
 // `driftlab-cli live --push` on the same store and run update for update,
-// a model worse than no compensation is refused on the page (shown, with
+// an extension adopted on the Diagnosis page is offered (the newest chosen)
+// and runs as `live --model` does, a model worse than no compensation is
+// refused on the page (shown, with
 // nothing written to the controller) unless the override is ticked, and Stop
 // ends a paced replay with the controller holding what the table shows.
 #include <gtest/gtest.h>
@@ -20,6 +22,7 @@
 #include <QTest>
 
 #include "acquisition/sim/SimulatedController.h"
+#include "db/ModelFitStore.h"
 #include "tests/support/PureNoise.h"
 #include "tests/ui/ModelsTestSupport.h"
 #include "ui/models/LiveUpdatesModel.h"
@@ -136,6 +139,67 @@ TEST(LiveCompensationPage, aReplaySentToTheControllerFollowsTheCliUpdateForUpdat
     EXPECT_TRUE(page.statusLabel()->text().contains(
         QStringLiteral("%1 updates sent to %2").arg(expected.size()).arg(pageController.url())))
         << page.statusLabel()->text().toStdString();
+}
+
+/// Stores a fit of `model` in campaign 1 of `store`, as Adopt on the
+/// Diagnosis page does (db::adoptExtension); the Live page needs its name only.
+void storeAdoptedFit(const QString& store, const QString& model) {
+    QString error;
+    auto opened = db::CampaignStore::open(store, db::StoreAccess::ReadWrite, &error);
+    ASSERT_TRUE(opened) << error.toStdString();
+    db::ModelFitRecord fit;
+    fit.model = model;
+    fit.train_runs = {QStringLiteral("S1")};
+    ASSERT_TRUE(db::storeModelFit(*opened, 1, fit, &error)) << error.toStdString();
+}
+
+TEST(LiveCompensationPage, anAdoptedExtensionIsOfferedAndRunsAsTheCliModelOptionDoes) {
+    QTemporaryDir dir;
+    const QString store =
+        simulatedStore(dir,
+                       {QStringLiteral("--runs"), QStringLiteral("S1,S4"),
+                        QStringLiteral("--effect"), QStringLiteral("motor_heat=0.5")},
+                       "adopted.db");
+    const QString extension = QStringLiteral("heat-transfer+motor_heat");
+    storeAdoptedFit(store, extension);
+    const CliResult cli = runCli(
+        {QStringLiteral("live"), QStringLiteral("--db"), store, QStringLiteral("--campaign"),
+         QStringLiteral("1"), QStringLiteral("--run"), QStringLiteral("S4"),
+         QStringLiteral("--train"), QStringLiteral("S1"), QStringLiteral("--model"), extension,
+         QStringLiteral("--interval-s"), QStringLiteral("300"), QStringLiteral("--json")});
+    ASSERT_EQ(cli.exitCode, 0) << cli.err.constData();
+    EXPECT_EQ(json(cli)[QStringLiteral("model")].toString(), extension);
+    const QJsonArray expected = json(cli)[QStringLiteral("updates")].toArray();
+    ASSERT_GT(expected.size(), 3);
+
+    auto window = liveWindowOn(store);
+    ui::LiveCompensationPage& page = *window->liveCompensationPage();
+    ASSERT_EQ(page.modelBox()->count(), 2);
+    EXPECT_EQ(page.modelBox()->itemText(0), QStringLiteral("heat-transfer"));
+    EXPECT_EQ(page.modelBox()->currentText(), extension);
+    replay(page, QStringLiteral("S4"), {QStringLiteral("S1")}, QString());
+    const std::vector<compensation::LiveUpdate>& updates = page.updatesModel()->updates();
+    ASSERT_EQ(updates.size(), std::size_t(expected.size()))
+        << page.statusLabel()->text().toStdString();
+    for (std::size_t i = 0; i < updates.size(); ++i)
+        EXPECT_DOUBLE_EQ(updates[i].offset_um,
+                         expected[qsizetype(i)].toObject()[QStringLiteral("offset_um")].toDouble())
+            << i;
+    EXPECT_DOUBLE_EQ(page.updatesModel()->uncertaintyUm(),
+                     expected[0].toObject()[QStringLiteral("uncertainty_um")].toDouble());
+
+    // A choice among the listed models stays when the store changes; an
+    // extension adopted meanwhile becomes the choice.
+    page.modelBox()->setCurrentIndex(0);
+    QSignalSpy shown(&page, &ui::LiveCompensationPage::campaignShown);
+    window->session().notifyStoreChanged();
+    ASSERT_TRUE(shown.wait(60'000));
+    EXPECT_EQ(page.modelBox()->currentText(), QStringLiteral("heat-transfer"));
+    storeAdoptedFit(store, QStringLiteral("heat-transfer+forced_convection"));
+    window->session().notifyStoreChanged();
+    ASSERT_TRUE(shown.wait(60'000));
+    EXPECT_EQ(page.modelBox()->currentText(), QStringLiteral("heat-transfer+forced_convection"));
+    EXPECT_EQ(page.modelBox()->count(), 3);
 }
 
 TEST(LiveCompensationPage, aModelWorseThanNoneIsRefusedForTheControllerUnlessOverridden) {

@@ -1,5 +1,7 @@
 #include "ui/pages/LiveCompensationPage.h"
 
+#include <algorithm>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -31,6 +33,8 @@ namespace driftlab::ui {
 namespace {
 
 const QString kLiveEventSource = QStringLiteral("live");
+const QString kBaseModel = QStringLiteral("heat-transfer");
+
 /// driftlab_eoffset's Modbus port in resources/linuxcnc (docs/linuxcnc.md).
 const QString kLinuxCncUrl = QStringLiteral("modbus://127.0.0.1:5020");
 
@@ -61,7 +65,7 @@ LiveCompensationPage::LiveCompensationPage(Session& session, QWidget* parent)
       m_url(new QLineEdit(this)),
       m_staleAfter(new QSpinBox(this)),
       m_speedup(new QDoubleSpinBox(this)),
-      m_override(new QCheckBox(tr("Send a model worse than no compensation (override)"), this)),
+      m_override(new QCheckBox(tr("Send even if worse than none (override)"), this)),
       m_start(new QPushButton(tr("Start"), this)),
       m_stop(new QPushButton(tr("Stop"), this)),
       m_harm(new QLabel(this)),
@@ -72,10 +76,15 @@ LiveCompensationPage::LiveCompensationPage(Session& session, QWidget* parent)
       m_plot(new LiveOffsetPlot(this)),
       m_loader(new SelectedCampaignLoader(session, false, this)),
       m_job(new BackgroundJob(this)) {
-    // Live compensation steps the screw model online: only the heat-transfer
-    // model has one (docs/live-compensation.md).
-    m_model->addItem(QStringLiteral("heat-transfer"));
-    m_model->setToolTip(tr("The screw model that runs online; fitted on the training runs"));
+    // Live compensation steps the screw model online: heat-transfer, or an
+    // extension of it the Diagnosis page adopted (docs/live-compensation.md).
+    m_model->addItem(kBaseModel);
+    m_model->setToolTip(
+        tr("The screw model that runs online, fitted on the training runs: "
+           "heat-transfer or an extension adopted on the Diagnosis page"));
+    // An extension's name is long ("heat-transfer+motor_heat"): shown whole.
+    m_model->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_model->setMinimumContentsLength(24);
     m_run->setToolTip(tr("The stored run replayed as live data (not a training run)"));
     m_run->setMinimumContentsLength(6);
     m_train->setToolTip(tr("The runs the model is fitted on"));
@@ -95,6 +104,12 @@ LiveCompensationPage::LiveCompensationPage(Session& session, QWidget* parent)
     m_controller->addItem(tr("None: rehearsal"), Rehearsal);
     m_controller->addItem(tr("LinuxCNC external offsets (driftlab_eoffset)"), LinuxCnc);
     m_controller->addItem(tr("Modbus live-offset registers (PLC)"), ModbusRegisters);
+    // Its longest entry would widen every page's minimum: it grows with the window.
+    m_controller->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_controller->setMinimumContentsLength(16);
+    m_override->setToolTip(
+        tr("Send a model that does worse than no compensation on its own "
+           "cross-validation (the CLI's --force)"));
     m_url->setPlaceholderText(QStringLiteral("modbus://HOST:PORT"));
     m_staleAfter->setRange(1, 65535);
     m_staleAfter->setValue(600);
@@ -198,6 +213,7 @@ void LiveCompensationPage::onLoaded(const LoadedCampaign& loaded) {
         return updateButtons();
     }
     m_campaign = loaded.campaign;
+    fillModels(loaded.adopted_extensions);
     const QString shown = m_run->currentText();
     const QStringList runs = models::modelledRuns(*m_campaign);
     {
@@ -215,6 +231,21 @@ void LiveCompensationPage::onLoaded(const LoadedCampaign& loaded) {
                           : tr("Choose the training runs and the run to replay, then Start."));
     updateButtons();
     emit campaignShown();
+}
+
+void LiveCompensationPage::fillModels(const QStringList& extensions) {
+    QStringList shown;
+    for (int i = 0; i < m_model->count(); ++i) shown << m_model->itemText(i);
+    const QString chosen = m_model->currentText();
+    const QSignalBlocker blocker(m_model);
+    m_model->clear();
+    m_model->addItem(kBaseModel);
+    m_model->addItems(extensions);
+    // An extension adopted since the list was filled is the one to try; a
+    // choice among the listed ones stays.
+    const bool adopted = !extensions.isEmpty() && !shown.contains(extensions.front());
+    const int keep = m_model->findText(chosen);
+    m_model->setCurrentIndex(adopted ? 1 : std::max(keep, 0));
 }
 
 void LiveCompensationPage::fillTrainRuns() {
@@ -251,6 +282,7 @@ void LiveCompensationPage::updateButtons() {
 
 live::LiveCompensationOptions LiveCompensationPage::options(QString* error) const {
     live::LiveCompensationOptions o;
+    o.model = m_model->currentText();
     o.run = m_run->currentText();
     for (int i = 0; i < m_train->count(); ++i)
         if (m_train->item(i)->checkState() == Qt::Checked) o.train_runs << m_train->item(i)->text();
@@ -281,7 +313,7 @@ void LiveCompensationPage::start() {
     m_cutSince_s.reset();
     m_lastTime_s = 0;
     m_status->setText(
-        tr("fitting the heat-transfer model on %1…").arg(o.train_runs.join(QStringLiteral(", "))));
+        tr("fitting the %1 model on %2…").arg(o.model, o.train_runs.join(QStringLiteral(", "))));
     // Reports cross to the GUI thread as queued calls: in order, before the job's end.
     o.on_update = [this](const compensation::LiveUpdate& u) {
         QMetaObject::invokeMethod(

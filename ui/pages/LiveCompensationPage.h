@@ -79,6 +79,8 @@ public slots:
 private:
     void onLoaded(const LoadedCampaign& loaded);
     void clearCampaign();
+    /// heat-transfer and the campaign's adopted `extensions` (newest first).
+    void fillModels(const QStringList& extensions);
     void fillTrainRuns();
     void updateControllerFields();
     void updateButtons();

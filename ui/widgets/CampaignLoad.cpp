@@ -9,6 +9,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "db/CampaignStore.h"
+#include "db/DiagnosisRecords.h"
 
 namespace driftlab::ui {
 
@@ -28,6 +29,8 @@ QFuture<LoadedCampaign> loadCampaignInBackground(const QString& storePath, qint6
         auto store = db::CampaignStore::open(storePath, db::StoreAccess::ReadOnly, &loaded.error);
         if (!store) return loaded;
         loaded.campaign = store->loadCampaign(campaignId, &loaded.error);
+        if (loaded.campaign)
+            loaded.adopted_extensions = db::adoptedExtensionModels(*store, campaignId);
         store.reset();
         if (loaded.campaign && withPushes) loaded.pushes = campaignPushes(storePath, campaignId);
         return loaded;

@@ -5,6 +5,7 @@
 
 #include <QFuture>
 #include <QString>
+#include <QStringList>
 #include <optional>
 #include <vector>
 
@@ -21,6 +22,8 @@ struct LoadedCampaign {
     /// The campaign's pushes, oldest first (empty when the store has no
     /// history yet); filled only when asked for.
     std::vector<db::PushRecord> pushes;
+    /// The campaign's adopted extensions of heat-transfer, newest first.
+    QStringList adopted_extensions;
 };
 
 /// Runs on a worker thread; `withPushes` also reads the push history.
